@@ -1,0 +1,59 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: peridynamic grains for LAMMPS.
+   atom_style peridem: peridynamic nodes grouped into grains.
+------------------------------------------------------------------------- */
+
+#ifdef ATOM_CLASS
+// clang-format off
+AtomStyle(peridem,AtomVecPeridem);
+// clang-format on
+#else
+
+#ifndef LMP_ATOM_VEC_PERIDEM_H
+#define LMP_ATOM_VEC_PERIDEM_H
+
+#include "atom_vec.h"
+
+namespace LAMMPS_NS {
+
+/* A peridynamic node: bond topology (the peridynamic bonds are LAMMPS
+   bonds), grain ID (the molecule ID), nodal volume (vfrac), mass (rmass)
+   and reference position x0. The Atoms line of a data file reads
+     atom-ID grain-ID atom-type volume density x y z x0 y0 z0
+   and the mass is density * volume. */
+class AtomVecPeridem : public AtomVec {
+ public:
+  AtomVecPeridem(class LAMMPS *);
+  ~AtomVecPeridem() override;
+
+  void grow_pointers() override;
+  void create_atom_post(int) override;
+  void data_atom_post(int) override;
+  void pack_data_pre(int) override;
+  void pack_data_post(int) override;
+  void pack_restart_pre(int) override;
+  void pack_restart_post(int) override;
+  void unpack_restart_init(int) override;
+  int property_atom(char *) override;
+  void pack_property_atom(int, double *, int, int) override;
+
+ private:
+  int *num_bond;
+  int **bond_type;
+  int **nspecial;
+  double *rmass, *vfrac;
+  double **x0;
+
+  // pack_data writes density, not mass: the mass is kept here meanwhile
+  double rmass_one;
+  // restart files carry turned-off (negative type) bonds as positive types
+  // plus this flag, as LAMMPS's bond atom style does
+  int *bond_negative;
+  int bond_negative_capacity;
+  int any_bond_negative;
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif

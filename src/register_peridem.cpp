@@ -1,0 +1,70 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: registration of all PERIDEM styles into a LAMMPS instance.
+------------------------------------------------------------------------- */
+
+#include "register_peridem.h"
+
+#include "atom.h"
+#include "error.h"
+#include "force.h"
+#include "input.h"
+#include "lammps.h"
+#include "modify.h"
+#include "version.h"
+
+#include "atom_vec_peridem.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+template <typename T> AtomVec *atom_vec_creator(LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+
+// One line per style. New styles are added here and in the list of names.
+void insert_styles(LAMMPS *lmp)
+{
+  (*lmp->atom->avec_map)["peridem"] = &atom_vec_creator<AtomVecPeridem>;
+}
+
+const char *const style_names[] = {"atom_style peridem", nullptr};
+
+} // namespace
+
+namespace PERIDEM {
+
+std::string version_mismatch_message(const std::string &compiled, const std::string &running)
+{
+  if (compiled == running) return {};
+  return "PERIDEM was compiled against LAMMPS version '" + compiled +
+         "' but is being loaded into LAMMPS version '" + running +
+         "'; rebuild PERIDEM with PERIDEM_LAMMPS_SRC pointing at the matching LAMMPS source tree";
+}
+
+void register_styles(LAMMPS *lmp, const std::string &expected_version)
+{
+  const std::string mismatch = version_mismatch_message(expected_version, lmp->version);
+  if (!mismatch.empty()) lmp->error->all(FLERR, mismatch);
+  insert_styles(lmp);
+}
+
+const char *const *registered_style_names()
+{
+  return style_names;
+}
+
+} // namespace PERIDEM
+
+extern "C" int peridem_register(void *lmp)
+{
+  if (!lmp) return 1;
+  PERIDEM::register_styles(static_cast<LAMMPS *>(lmp), LAMMPS_VERSION);
+  return 0;
+}
+
+extern "C" const char *peridem_lammps_version()
+{
+  return LAMMPS_VERSION;
+}

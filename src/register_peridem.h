@@ -1,0 +1,44 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: registration of all PERIDEM styles into a LAMMPS instance.
+
+   LAMMPS as packaged by Debian has no PLUGIN package. The style maps of
+   Force, Modify, Atom and Input are public, so the styles are inserted
+   there directly, as the PLUGIN package would do.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_REGISTER_PERIDEM_H
+#define LMP_REGISTER_PERIDEM_H
+
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+extern "C" {
+/* Register every PERIDEM style into the LAMMPS instance `lmp` (a
+   LAMMPS_NS::LAMMPS *, e.g. from lammps_open() or the Python module's
+   lmp.lmp pointer). Safe to call more than once. Returns 0 on success; a
+   LAMMPS version other than the one PERIDEM was compiled against is a
+   LAMMPS error (the process ends). */
+int peridem_register(void *lmp);
+
+/* The LAMMPS version string PERIDEM was compiled against. */
+const char *peridem_lammps_version();
+}
+
+namespace PERIDEM {
+
+/* The message for a version mismatch, empty when the versions agree. */
+std::string version_mismatch_message(const std::string &compiled, const std::string &running);
+
+/* Register the styles after checking that `lmp` is the LAMMPS version
+   `expected_version`; peridem_register() passes the compiled-in version. */
+void register_styles(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_version);
+
+/* Names of the registered styles, "kind name" each (for tests and docs). */
+const char *const *registered_style_names();
+
+} // namespace PERIDEM
+
+#endif

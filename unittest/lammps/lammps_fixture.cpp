@@ -1,0 +1,76 @@
+#include "lammps_fixture.h"
+
+#include "input.h"
+#include "lammps.h"
+#include "register_peridem.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <mpi.h>
+
+using namespace LAMMPS_NS;
+
+LAMMPS *make_lammps(const std::vector<std::string> &extra_args, bool screen)
+{
+  std::vector<std::string> args = {"lammps_test", "-log", "none", "-echo", "none"};
+  if (!screen && !std::getenv("PERIDEM_TEST_VERBOSE")) {
+    args.emplace_back("-screen");
+    args.emplace_back("none");
+  }
+  args.insert(args.end(), extra_args.begin(), extra_args.end());
+  std::vector<char *> argv;
+  for (auto &a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  auto *lmp = new LAMMPS(static_cast<int>(args.size()), argv.data(), MPI_COMM_WORLD);
+  peridem_register(lmp);
+  return lmp;
+}
+
+void write_text_file(const std::string &path, const std::string &text)
+{
+  std::ofstream out(path);
+  out << text;
+}
+
+void LammpsTest::SetUp()
+{
+  const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
+  scratch_dir = (std::filesystem::temp_directory_path() /
+                 (std::string("peridem_") + info->test_suite_name() + "_" + info->name()))
+                    .string() +
+                "/";
+  std::filesystem::remove_all(scratch_dir);
+  std::filesystem::create_directories(scratch_dir);
+  lmp = make_lammps();
+}
+
+void LammpsTest::TearDown()
+{
+  delete lmp;
+  lmp = nullptr;
+  std::filesystem::remove_all(scratch_dir);
+}
+
+void LammpsTest::command(const std::string &line)
+{
+  size_t start = 0;
+  while (start <= line.size()) {
+    size_t end = line.find('\n', start);
+    if (end == std::string::npos) end = line.size();
+    const std::string one = line.substr(start, end - start);
+    if (one.find_first_not_of(" \t") != std::string::npos) lmp->input->one(one);
+    start = end + 1;
+  }
+}
+
+int main(int argc, char **argv)
+{
+  MPI_Init(&argc, &argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  // death tests re-run the test binary, which then has its own MPI_Init
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const int rc = RUN_ALL_TESTS();
+  MPI_Finalize();
+  return rc;
+}
