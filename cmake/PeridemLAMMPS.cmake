@@ -57,7 +57,7 @@ add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver
 target_include_directories(peridem PUBLIC ${PROJECT_SOURCE_DIR}/src)
 # after LAMMPS's own include directory, so installed headers win where both exist
 target_include_directories(peridem SYSTEM AFTER PUBLIC ${PERIDEM_LAMMPS_SRC})
-target_link_libraries(peridem PUBLIC LAMMPS::lammps MPI::MPI_CXX PRIVATE ${CMAKE_DL_LIBS})
+target_link_libraries(peridem PUBLIC LAMMPS::lammps MPI::MPI_CXX PRIVATE peridem_core ${CMAKE_DL_LIBS})
 target_compile_options(peridem PRIVATE -Wall -Wextra -Wno-unused-parameter)
 set_target_properties(peridem PROPERTIES OUTPUT_NAME peridem)
 

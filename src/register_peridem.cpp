@@ -13,6 +13,9 @@
 #include "version.h"
 
 #include "atom_vec_peridem.h"
+#include "bond_peridem.h"
+#include "compute_peridem_damage.h"
+#include "fix_peridem_bonds.h"
 
 using namespace LAMMPS_NS;
 
@@ -23,13 +26,32 @@ template <typename T> AtomVec *atom_vec_creator(LAMMPS *lmp)
   return new T(lmp);
 }
 
+template <typename T> Bond *bond_creator(LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+
+template <typename T> Fix *fix_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+
+template <typename T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+
 // One line per style. New styles are added here and in the list of names.
 void insert_styles(LAMMPS *lmp)
 {
   (*lmp->atom->avec_map)["peridem"] = &atom_vec_creator<AtomVecPeridem>;
+  (*lmp->force->bond_map)["peridem"] = &bond_creator<BondPeridem>;
+  (*lmp->modify->fix_map)["peridem/bonds"] = &fix_creator<FixPeridemBonds>;
+  (*lmp->modify->compute_map)["peridem/damage"] = &compute_creator<ComputePeridemDamage>;
 }
 
-const char *const style_names[] = {"atom_style peridem", nullptr};
+const char *const style_names[] = {"atom_style peridem", "bond_style peridem",
+                                   "compute peridem/damage", "fix peridem/bonds", nullptr};
 
 } // namespace
 

@@ -1,0 +1,581 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: bond_style peridem, bond-based peridynamics with breakage.
+
+   The physics lives in peridem_bond_law.h (grain-shape seed eq. 3.2,
+   Table 1, §3.1); this file applies it to LAMMPS's bond list.
+------------------------------------------------------------------------- */
+
+#include "bond_peridem.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_peridem_bonds.h"
+#include "force.h"
+#include "lattice.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "lmp_peridem_material.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *const STYLE = "bond_style peridem";
+const char *const COEFF = "bond_coeff";
+} // namespace
+
+/* ---------------------------------------------------------------------- */
+
+BondPeridem::BondPeridem(LAMMPS *lmp)
+    : Bond(lmp), c(nullptr), s0(nullptr), horizon(nullptr), spacing(nullptr), conic(nullptr),
+      breakage(peridem::BreakageMode::Tension), break_flag(1), break_after_force(0),
+      volume_correction(0), cohesive(0), validate_next(1), nbroken(0), bonds_fix(nullptr),
+      cache_ncalls(-1), cache_bondlist(nullptr)
+{
+  writedata = 1;
+}
+
+BondPeridem::~BondPeridem()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(c);
+    memory->destroy(s0);
+    memory->destroy(horizon);
+    memory->destroy(spacing);
+    memory->destroy(conic);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   reference bond length |x0_i - x0_j|; x0 of a ghost atom is its owner's,
+   not shifted by the periodic image, hence the minimum image convention
+------------------------------------------------------------------------- */
+
+double BondPeridem::reference_length(int i1, int i2) const
+{
+  double **x0 = atom->x0;
+  double dx = x0[i1][0] - x0[i2][0];
+  double dy = x0[i1][1] - x0[i2][1];
+  double dz = x0[i1][2] - x0[i2][2];
+  if ((domain->xperiodic && std::fabs(dx) > domain->xprd_half) ||
+      (domain->yperiodic && std::fabs(dy) > domain->yprd_half) ||
+      (domain->zperiodic && std::fabs(dz) > domain->zprd_half))
+    domain->minimum_image(dx, dy, dz);
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/* ----------------------------------------------------------------------
+   F = c w(|xi|) s V_i V_j along the current bond (seed eq. 3.2 times the
+   nodal volumes); the bond breaks for good once s > s0 (§3.1)
+------------------------------------------------------------------------- */
+
+void BondPeridem::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (validate_next) validate_bonds();
+  if (neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(cache.size()) ||
+      neighbor->bondlist != cache_bondlist)
+    fill_cache();
+
+  double **x = atom->x;
+  double **f = atom->f;
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  const BondCache *bc = cache.data();
+  double ebond = 0.0;
+
+  for (int n = 0; n < nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+
+    const double r0 = bc[n].r0;
+    const double delx = x[i1][0] - x[i2][0];
+    const double dely = x[i1][1] - x[i2][1];
+    const double delz = x[i1][2] - x[i2][2];
+    const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
+    const double s = peridem::stretch(r, r0);
+
+    // a bond that breaks now carries no force now, unless the user asked
+    // for the order of LAMMPS's peri styles: force first, then break
+    const bool breaks = break_flag && peridem::bond_breaks(s, s0[type], breakage);
+    if (breaks && !break_after_force) {
+      break_bond(n, i1, i2, r0, s0[type]);
+      continue;
+    }
+
+    // bond_force(c, w, s, V_i, V_j) with c w V_i V_j (volume factor) in k
+    const double fmag = peridem::bond_force(bc[n].k, 1.0, s, 1.0, 1.0);
+    // positive force pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
+    const double fbond = r > 0.0 ? -fmag / r : 0.0;
+
+    f[i1][0] += delx * fbond;
+    f[i1][1] += dely * fbond;
+    f[i1][2] += delz * fbond;
+    if (newton_bond || i2 < nlocal) {
+      f[i2][0] -= delx * fbond;
+      f[i2][1] -= dely * fbond;
+      f[i2][2] -= delz * fbond;
+    }
+
+    if (eflag) ebond = peridem::bond_energy(bc[n].k, 1.0, s, r0, 1.0, 1.0);
+    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+    if (breaks) break_bond(n, i1, i2, r0, s0[type]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   per entry of the bond list: reference length and the stiffness
+   k = c w(|xi|) V_i V_j (times the volume factor), which change only when
+   LAMMPS rebuilds the bond list
+------------------------------------------------------------------------- */
+
+double BondPeridem::bond_stiffness(int type, double r0, int i1, int i2) const
+{
+  const double w = peridem::micromodulus_value(conic[type] ? peridem::Micromodulus::Conic
+                                                           : peridem::Micromodulus::Constant,
+                                               r0, horizon[type]);
+  const double vscale = volume_correction
+                            ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM, r0,
+                                                     horizon[type], spacing[type])
+                            : 1.0;
+  return peridem::bond_force(c[type], w, 1.0, atom->vfrac[i1], atom->vfrac[i2] * vscale);
+}
+
+void BondPeridem::fill_cache()
+{
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  cache.resize(nbondlist);
+  for (int n = 0; n < nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    cache[n].r0 = reference_length(i1, i2);
+    cache[n].k = bond_stiffness(type, cache[n].r0, i1, i2);
+  }
+  cache_ncalls = neighbor->ncalls;
+  cache_bondlist = bondlist;
+}
+
+/* ----------------------------------------------------------------------
+   bond n broke: type 0 in this step's bond list, and out of the bond
+   arrays (fix peridem/bonds keeps count), so that its nodes may separate
+   without LAMMPS missing a bond partner. Another rank that holds the bond
+   (newton_bond off, partner owned there) computes the same stretch from
+   the same positions and breaks it too.
+------------------------------------------------------------------------- */
+
+void BondPeridem::break_bond(int n, int i1, int i2, double r0, double s0type)
+{
+  neighbor->bondlist[n][2] = 0;
+  double **x = atom->x;
+  double **x0 = atom->x0;
+  double du[3];
+  for (int d = 0; d < 3; d++) du[d] = (x[i2][d] - x[i1][d]) - (x0[i2][d] - x0[i1][d]);
+  domain->minimum_image(du[0], du[1], du[2]);
+  const double z =
+      peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]), r0, s0type);
+  bonds_fix->bond_broken(i1, i2, z);
+  nbroken++;
+}
+
+/* ----------------------------------------------------------------------
+   once per run: bonds must join nodes of one grain and be no longer than
+   the horizon of their type
+------------------------------------------------------------------------- */
+
+void BondPeridem::validate_bonds()
+{
+  validate_next = 0;
+  int **bondlist = neighbor->bondlist;
+  const tagint *tag = atom->tag;
+  const tagint *molecule = atom->molecule;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const int i1 = bondlist[n][0];
+    const int i2 = bondlist[n][1];
+    if (!cohesive && molecule[i1] != molecule[i2])
+      error->one(FLERR,
+                 "{}: bond between atoms {} and {} joins grains {} and {}; peridynamic bonds "
+                 "join nodes of one grain (use bond_style peridem cohesive yes to allow this)",
+                 STYLE, tag[i1], tag[i2], molecule[i1], molecule[i2]);
+    const double r0 = reference_length(i1, i2);
+    if (r0 > horizon[type] * (1.0 + 1e-10))
+      error->one(FLERR,
+                 "{}: bond between atoms {} and {} (type {}) has reference length {} longer "
+                 "than the horizon {}",
+                 STYLE, tag[i1], tag[i2], type, r0, horizon[type]);
+    if (r0 <= 0.0)
+      error->one(FLERR, "{}: atoms {} and {} are bonded but have the same reference position",
+                 STYLE, tag[i1], tag[i2]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   bond_style peridem [break tension|absolute|off] [break_order before_force|after_force]
+                      [volume_correction none|linear] [cohesive no|yes]
+------------------------------------------------------------------------- */
+
+void BondPeridem::settings(int narg, char **arg)
+{
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
+    const std::string value = arg[iarg + 1];
+    if (key == "break") {
+      if (value == "tension") {
+        break_flag = 1;
+        breakage = peridem::BreakageMode::Tension;
+      } else if (value == "absolute") {
+        break_flag = 1;
+        breakage = peridem::BreakageMode::Absolute;
+      } else if (value == "off") {
+        break_flag = 0;
+      } else
+        error->all(FLERR, "{}: break must be tension, absolute or off, not {}", STYLE, value);
+    } else if (key == "break_order") {
+      if (value == "before_force")
+        break_after_force = 0;
+      else if (value == "after_force")
+        break_after_force = 1;
+      else
+        error->all(FLERR, "{}: break_order must be before_force or after_force, not {}", STYLE,
+                   value);
+    } else if (key == "volume_correction") {
+      if (value == "none")
+        volume_correction = 0;
+      else if (value == "linear")
+        volume_correction = 1;
+      else
+        error->all(FLERR, "{}: volume_correction must be none or linear, not {}", STYLE, value);
+    } else if (key == "cohesive") {
+      if (value == "yes")
+        cohesive = 1;
+      else if (value == "no")
+        cohesive = 0;
+      else
+        error->all(FLERR, "{}: cohesive must be yes or no, not {}", STYLE, value);
+    } else
+      error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondPeridem::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(setflag, np1, "bond:setflag");
+  memory->create(c, np1, "bond:c");
+  memory->create(s0, np1, "bond:s0");
+  memory->create(horizon, np1, "bond:horizon");
+  memory->create(spacing, np1, "bond:spacing");
+  memory->create(conic, np1, "bond:conic");
+  for (int i = 0; i < np1; i++) {
+    setflag[i] = 0;
+    c[i] = s0[i] = horizon[i] = spacing[i] = 0.0;
+    conic[i] = 0;
+  }
+  params.assign(np1, TypeParams());
+}
+
+void BondPeridem::copy_params(int type)
+{
+  const TypeParams &p = params[type];
+  c[type] = p.c;
+  s0[type] = p.s0;
+  horizon[type] = p.horizon;
+  spacing[type] = p.spacing;
+  conic[type] = p.micromodulus == peridem::Micromodulus::Conic;
+  setflag[type] = 1;
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N material FILE NAME [horizon eps] [micromodulus m] [spacing h]
+   bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h]
+   bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h]
+------------------------------------------------------------------------- */
+
+void BondPeridem::coeff(int narg, char **arg)
+{
+  if (narg < 2) error->all(FLERR, "{}: {} needs a bond type and its parameters", COEFF, STYLE);
+  if (!allocated) allocate();
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+
+  const int dimension = domain->dimension;
+  double E = 0.0, K = 0.0, Gc = 0.0, cval = 0.0, s0val = 0.0, eps = 0.0, h = 0.0;
+  bool haveE = false, haveK = false, haveGc = false, haveC = false, haveS0 = false;
+  bool haveMaterial = false, haveMicro = false;
+  peridem::Micromodulus micro = peridem::Micromodulus::Constant;
+  peridem::Material material;
+  std::string origin;
+
+  auto positive = [&](int iarg, const char *what) {
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, what);
+    const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!(v > 0.0))
+      error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, STYLE, arg[iarg + 1]);
+    return v;
+  };
+
+  for (int iarg = 1; iarg < narg;) {
+    const std::string key = arg[iarg];
+    if (key == "material") {
+      if (iarg + 2 >= narg)
+        error->all(FLERR, "{}: material needs a file name and a material name", COEFF);
+      material = PERIDEM::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
+      haveMaterial = true;
+      origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
+      iarg += 3;
+      continue;
+    }
+    if (key == "micromodulus") {
+      if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword micromodulus needs a value", COEFF);
+      micro = PERIDEM::parse_micromodulus(lmp, COEFF, arg[iarg + 1]);
+      haveMicro = true;
+    } else if (key == "E") {
+      E = positive(iarg, "E (Young's modulus)");
+      haveE = true;
+    } else if (key == "K") {
+      K = positive(iarg, "K (bulk modulus)");
+      haveK = true;
+    } else if (key == "Gc") {
+      Gc = positive(iarg, "Gc (fracture energy)");
+      haveGc = true;
+    } else if (key == "c") {
+      cval = positive(iarg, "c (spring constant)");
+      haveC = true;
+    } else if (key == "s0") {
+      s0val = positive(iarg, "s0 (critical stretch)");
+      haveS0 = true;
+    } else if (key == "horizon") {
+      eps = positive(iarg, "horizon");
+    } else if (key == "spacing") {
+      h = positive(iarg, "spacing");
+    } else
+      error->all(FLERR, "{}: unknown keyword {} for {}", COEFF, key, STYLE);
+    iarg += 2;
+  }
+
+  const int nsources = int(haveMaterial) + int(haveE || haveK) + int(haveC || haveS0);
+  if (nsources != 1)
+    error->all(FLERR,
+               "{}: {} needs exactly one of: material FILE NAME; E or K with Gc and horizon; "
+               "c with s0 and horizon",
+               COEFF, STYLE);
+  if (haveE && haveK) error->all(FLERR, "{}: give E or K, not both", COEFF);
+
+  TypeParams p;
+  try {
+    if (haveMaterial) {
+      p.micromodulus = haveMicro ? micro : material.micromodulus;
+      material.micromodulus = p.micromodulus;
+      p.horizon = eps > 0.0 ? eps : material.horizon;
+      if (!(p.horizon > 0.0))
+        error->all(FLERR, "{}: {} has no horizon: add horizon to the file or the command", COEFF,
+                   origin);
+      const peridem::BondConstants bc =
+          peridem::material_bond_constants(material, dimension, p.horizon);
+      p.c = bc.c;
+      p.s0 = bc.s0;
+    } else if (haveE || haveK) {
+      if (!haveGc)
+        error->all(FLERR, "{}: {} with {} needs Gc (fracture energy)", COEFF, STYLE,
+                   haveE ? "E" : "K");
+      if (!(eps > 0.0)) error->all(FLERR, "{}: {} needs a horizon", COEFF, STYLE);
+      p.micromodulus = micro;
+      p.horizon = eps;
+      const peridem::BondConstants bc = peridem::derive_bond_constants(
+          dimension, micro,
+          haveE ? peridem::ElasticInput::YoungsModulus : peridem::ElasticInput::BulkModulus,
+          haveE ? E : K, Gc, eps);
+      p.c = bc.c;
+      p.s0 = bc.s0;
+      origin = fmt::format("{} = {}, Gc = {}", haveE ? "E" : "K", haveE ? E : K, Gc);
+    } else {
+      if (!haveC || !haveS0) error->all(FLERR, "{}: give both c and s0", COEFF);
+      if (!(eps > 0.0)) error->all(FLERR, "{}: {} needs a horizon", COEFF, STYLE);
+      if (haveGc) error->all(FLERR, "{}: Gc does not go with c and s0 (s0 is given)", COEFF);
+      p.micromodulus = micro;
+      p.horizon = eps;
+      p.c = cval;
+      p.s0 = s0val;
+      origin = "c and s0 given";
+    }
+  } catch (peridem::ParameterError &e) {
+    error->all(FLERR, "{}: {}", COEFF, e.what());
+  }
+  p.spacing = h;
+  p.origin = origin;
+
+  for (int i = ilo; i <= ihi; i++) {
+    params[i] = p;
+    copy_params(i);
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "{} type {}: c = {:.10g}, s0 = {:.10g}, horizon = {:.10g}, {} micromodulus, "
+                   "{}d ({})\n",
+                   STYLE, arg[0], p.c, p.s0, p.horizon, PERIDEM::micromodulus_name(p.micromodulus),
+                   dimension, origin);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondPeridem::init_style()
+{
+  if (!atom->vfrac_flag || !atom->x0_flag || !atom->molecule_flag || !atom->rmass_flag)
+    error->all(FLERR,
+               "{} requires atom style peridem (per-atom volume, reference position x0 and "
+               "grain ID)",
+               STYLE);
+
+  double max_reach = 0.0;
+  for (int i = 1; i <= atom->nbondtypes; i++) {
+    if (!setflag[i]) continue;
+    if (volume_correction && spacing[i] <= 0.0) {
+      if (domain->lattice && domain->lattice->style != Lattice::NONE)
+        spacing[i] = domain->lattice->xlattice;
+      else
+        error->all(FLERR,
+                   "{}: volume_correction linear needs the node spacing of bond type {}: add "
+                   "spacing to its bond_coeff (or define a lattice)",
+                   STYLE, i);
+    }
+    max_reach = std::max(max_reach, horizon[i]);
+  }
+
+  // ghost atoms must cover every bond partner, whatever the pair cutoff;
+  // 1.5 x the longest bond is LAMMPS's own estimate (Comm::get_comm_cutoff)
+  const double needed = 1.5 * max_reach + neighbor->skin;
+  if (comm->cutghostuser < needed) {
+    comm->cutghostuser = needed;
+    if (comm->me == 0)
+      utils::logmesg(lmp, "{}: communication cutoff set to {:.8g} (1.5 x largest horizon + skin)\n",
+                     STYLE, needed);
+  }
+  // the bookkeeping of broken bonds
+  const int ifix = modify->find_fix(FixPeridemBonds::ID);
+  if (ifix < 0)
+    bonds_fix = dynamic_cast<FixPeridemBonds *>(
+        modify->add_fix(fmt::format("{} all peridem/bonds", FixPeridemBonds::ID)));
+  else
+    bonds_fix = dynamic_cast<FixPeridemBonds *>(modify->fix[ifix]);
+  if (!bonds_fix)
+    error->all(FLERR, "{}: fix {} is not a fix peridem/bonds", STYLE, FixPeridemBonds::ID);
+  validate_next = 1;
+  cache_ncalls = -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondPeridem::equilibrium_distance(int i)
+{
+  return horizon[i];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondPeridem::write_restart(FILE *fp)
+{
+  const int n = atom->nbondtypes;
+  for (double *a : {c, s0, horizon, spacing}) fwrite(&a[1], sizeof(double), n, fp);
+  fwrite(&conic[1], sizeof(int), n, fp);
+}
+
+void BondPeridem::read_restart(FILE *fp)
+{
+  allocate();
+  const int n = atom->nbondtypes;
+  for (double *a : {c, s0, horizon, spacing}) {
+    if (comm->me == 0) utils::sfread(FLERR, &a[1], sizeof(double), n, fp, nullptr, error);
+    MPI_Bcast(&a[1], n, MPI_DOUBLE, 0, world);
+  }
+  if (comm->me == 0) utils::sfread(FLERR, &conic[1], sizeof(int), n, fp, nullptr, error);
+  MPI_Bcast(&conic[1], n, MPI_INT, 0, world);
+  for (int i = 1; i <= n; i++) {
+    params[i].c = c[i];
+    params[i].s0 = s0[i];
+    params[i].horizon = horizon[i];
+    params[i].spacing = spacing[i];
+    params[i].micromodulus =
+        conic[i] ? peridem::Micromodulus::Conic : peridem::Micromodulus::Constant;
+    params[i].origin = "restart file";
+    setflag[i] = 1;
+  }
+}
+
+void BondPeridem::write_restart_settings(FILE *fp)
+{
+  const int settings[5] = {break_flag, breakage == peridem::BreakageMode::Absolute,
+                           volume_correction, cohesive, break_after_force};
+  fwrite(settings, sizeof(int), 5, fp);
+}
+
+void BondPeridem::read_restart_settings(FILE *fp)
+{
+  int settings[5];
+  if (comm->me == 0) utils::sfread(FLERR, settings, sizeof(int), 5, fp, nullptr, error);
+  MPI_Bcast(settings, 5, MPI_INT, 0, world);
+  break_flag = settings[0];
+  breakage = settings[1] ? peridem::BreakageMode::Absolute : peridem::BreakageMode::Tension;
+  volume_correction = settings[2];
+  cohesive = settings[3];
+  break_after_force = settings[4];
+}
+
+/* ----------------------------------------------------------------------
+   Bond Coeffs in the direct form, so a data file reproduces c and s0
+------------------------------------------------------------------------- */
+
+void BondPeridem::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++) {
+    std::string line = fmt::format("{} c {:.17g} s0 {:.17g} horizon {:.17g} micromodulus {}", i,
+                                   c[i], s0[i], horizon[i], conic[i] ? "conic" : "constant");
+    if (spacing[i] > 0.0) line += fmt::format(" spacing {:.17g}", spacing[i]);
+    fprintf(fp, "%s\n", line.c_str());
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double BondPeridem::single(int type, double rsq, int i, int j, double &fforce)
+{
+  fforce = 0.0;
+  if (type <= 0) return 0.0;
+  const double r0 = reference_length(i, j);
+  const double k = bond_stiffness(type, r0, i, j);
+  const double r = std::sqrt(rsq);
+  const double s = peridem::stretch(r, r0);
+  fforce = r > 0.0 ? -peridem::bond_force(k, 1.0, s, 1.0, 1.0) / r : 0.0;
+  return peridem::bond_energy(k, 1.0, s, r0, 1.0, 1.0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *BondPeridem::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "c") == 0) return (void *)c;
+  if (strcmp(str, "s0") == 0) return (void *)s0;
+  if (strcmp(str, "horizon") == 0) return (void *)horizon;
+  dim = 0;
+  if (strcmp(str, "nbroken") == 0) return (void *)&nbroken;
+  return nullptr;
+}

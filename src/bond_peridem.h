@@ -1,0 +1,89 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: bond_style peridem, bond-based peridynamics with breakage.
+   See doc/bond_peridem.rst.
+------------------------------------------------------------------------- */
+
+#ifdef BOND_CLASS
+// clang-format off
+BondStyle(peridem,BondPeridem);
+// clang-format on
+#else
+
+#ifndef LMP_BOND_PERIDEM_H
+#define LMP_BOND_PERIDEM_H
+
+#include "bond.h"
+#include "peridem_bond_law.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class BondPeridem : public Bond {
+ public:
+  BondPeridem(class LAMMPS *);
+  ~BondPeridem() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double equilibrium_distance(int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  double single(int, double, int, int, double &) override;
+  void *extract(const char *, int &) override;
+
+  // number of bonds this rank broke since the start (tests, thermo via extract)
+  bigint nbroken_local() const { return nbroken; }
+
+ protected:
+  // per bond type, index 1..nbondtypes
+  struct TypeParams {
+    double c = 0.0;       // spring constant c_w (grain-shape seed eq. 3.2, Table 1)
+    double s0 = 0.0;      // critical stretch
+    double horizon = 0.0; // eps: bonds are no longer than this
+    double spacing = 0.0; // node spacing h for the volume correction (0: not given)
+    peridem::Micromodulus micromodulus = peridem::Micromodulus::Constant;
+    std::string origin; // what the user gave, for the log
+  };
+  std::vector<TypeParams> params;
+  // flat copies for the force loop
+  double *c, *s0, *horizon, *spacing;
+  int *conic;
+
+  peridem::BreakageMode breakage;
+  int break_flag;        // 0: bonds never break
+  int break_after_force; // 1: a breaking bond still acts in its last step (LAMMPS peri)
+  int volume_correction; // 0: none, 1: linear ramp near the horizon
+  int cohesive;          // 1: bonds between different grains allowed
+  int validate_next;     // check the bond list in the next compute()
+  bigint nbroken;
+  class FixPeridemBonds *bonds_fix;
+
+  // per entry of LAMMPS's bond list, valid until it is rebuilt
+  struct BondCache {
+    double r0; // reference length |xi|
+    double k;  // c w(|xi|) V_i V_j, times the volume factor
+  };
+  std::vector<BondCache> cache;
+  bigint cache_ncalls;
+  int **cache_bondlist;
+  void fill_cache();
+  double bond_stiffness(int type, double r0, int i1, int i2) const;
+
+  void allocate();
+  void copy_params(int type);
+  void validate_bonds();
+  void break_bond(int n, int i1, int i2, double r0, double s0type);
+  double reference_length(int i1, int i2) const;
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,243 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: compute peridem/damage.
+
+   Per node (grain-shape seed §3.1, PeriDEM seed eq. 14):
+     phi = broken / reference bonds of the node
+     Z   = max over the node's reference bonds of |u_j - u_i| / |xi| / s0
+   per grain: the mean of phi over the grain's nodes; bulk damage: the mean
+   over grains of the grain damage.
+
+   Intact bonds are counted from the bond arrays (with newton_bond on a
+   bond is stored by one node, and the partner's share travels through its
+   ghost copy); broken bonds have left the bond arrays and are counted by
+   fix peridem/bonds, with the Z they had when they broke.
+------------------------------------------------------------------------- */
+
+#include "compute_peridem_damage.h"
+
+#include "atom.h"
+#include "bond.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_peridem_bonds.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include "peridem_bond_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *const STYLE = "compute peridem/damage";
+enum { PHI = 0, ZMAX = 1, GRAIN = 2 };
+} // namespace
+
+/* ---------------------------------------------------------------------- */
+
+ComputePeridemDamage::ComputePeridemDamage(LAMMPS *lmp, int narg, char **arg)
+    : Compute(lmp, narg, arg), nmax(0), damage(nullptr), intact(nullptr), zintact(nullptr),
+      stats(nullptr), s0(nullptr), bonds_fix(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Illegal {} command: it takes no arguments", STYLE);
+  if (!atom->molecular || !atom->molecule_flag || !atom->x0_flag)
+    error->all(FLERR, "{} requires atom style peridem (bonds, grain IDs and x0)", STYLE);
+
+  peratom_flag = 1;
+  size_peratom_cols = 3;
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 4;
+  extscalar = 0;
+  extvector = 0;
+  comm_reverse = 2;
+  stats = new double[4]();
+}
+
+ComputePeridemDamage::~ComputePeridemDamage()
+{
+  memory->destroy(damage);
+  memory->destroy(intact);
+  memory->destroy(zintact);
+  delete[] stats;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputePeridemDamage::init()
+{
+  int dim = 0;
+  s0 = force->bond ? static_cast<double *>(force->bond->extract("s0", dim)) : nullptr;
+  const int ifix = modify->find_fix(FixPeridemBonds::ID);
+  bonds_fix = ifix >= 0 ? dynamic_cast<FixPeridemBonds *>(modify->fix[ifix]) : nullptr;
+  if (!s0 || dim != 1 || !bonds_fix) error->all(FLERR, "{} needs bond_style peridem", STYLE);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputePeridemDamage::refresh()
+{
+  if (atom->nmax > nmax) {
+    memory->destroy(damage);
+    memory->destroy(intact);
+    memory->destroy(zintact);
+    nmax = atom->nmax;
+    memory->create(damage, nmax, 3, "peridem/damage:damage");
+    memory->create(intact, nmax, "peridem/damage:intact");
+    memory->create(zintact, nmax, "peridem/damage:zintact");
+  }
+  count_bonds();
+  grain_means();
+}
+
+/* ----------------------------------------------------------------------
+   phi and Z of every owned node, and the global bond counts
+------------------------------------------------------------------------- */
+
+void ComputePeridemDamage::count_bonds()
+{
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const tagint *tag = atom->tag;
+  double **x = atom->x;
+  double **x0 = atom->x0;
+  const int newton_bond = force->newton_bond;
+
+  for (int i = 0; i < nall; i++) intact[i] = zintact[i] = 0.0;
+
+  double bonds_local = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    for (int m = 0; m < atom->num_bond[i]; m++) {
+      const int type = atom->bond_type[i][m];
+      if (type <= 0) continue; // turned off by delete_bonds: not a bond
+      const tagint partner = atom->bond_atom[i][m];
+      const int j = atom->map(partner);
+      if (j < 0)
+        error->one(FLERR, "{}: atom {} bonded to atom {} is missing on proc {}", STYLE, partner,
+                   tag[i], comm->me);
+      double du[3];
+      for (int d = 0; d < 3; d++) du[d] = (x[j][d] - x[i][d]) - (x0[j][d] - x0[i][d]);
+      double xi[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+      domain->minimum_image(du[0], du[1], du[2]);
+      domain->minimum_image(xi[0], xi[1], xi[2]);
+      const double z =
+          peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]),
+                               std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]), s0[type]);
+      intact[i] += 1.0;
+      zintact[i] = std::max(zintact[i], z);
+      if (newton_bond) { // the partner does not store this bond
+        intact[j] += 1.0;
+        zintact[j] = std::max(zintact[j], z);
+      }
+      if (newton_bond || tag[i] < partner) bonds_local += 1.0;
+    }
+  }
+  if (newton_bond) comm->reverse_comm_compute(this);
+
+  const double *nbroken = bonds_fix->broken_count();
+  const double *zbroken = bonds_fix->broken_z();
+  const int *mask = atom->mask;
+  for (int i = 0; i < nlocal; i++) {
+    const bool in_group = mask[i] & groupbit;
+    const long broken = std::lround(nbroken[i]);
+    damage[i][PHI] =
+        in_group ? peridem::bond_fraction_damage(broken, broken + std::lround(intact[i])) : 0.0;
+    damage[i][ZMAX] = in_group ? std::max(zintact[i], zbroken[i]) : 0.0;
+  }
+  double bonds_all = 0.0;
+  MPI_Allreduce(&bonds_local, &bonds_all, 1, MPI_DOUBLE, MPI_SUM, world);
+  stats[1] = bonds_fix->total_broken();
+  stats[2] = bonds_all + stats[1];
+}
+
+int ComputePeridemDamage::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    buf[m++] = intact[i];
+    buf[m++] = zintact[i];
+  }
+  return m;
+}
+
+void ComputePeridemDamage::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int j = list[k];
+    intact[j] += buf[m++];
+    zintact[j] = std::max(zintact[j], buf[m++]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   grain damage = mean phi over the grain's nodes (in the group);
+   bulk damage = mean over grains of the grain damage
+------------------------------------------------------------------------- */
+
+void ComputePeridemDamage::grain_means()
+{
+  const int nlocal = atom->nlocal;
+  const tagint *molecule = atom->molecule;
+  const int *mask = atom->mask;
+  tagint maxmol_local = 0, maxmol = 0;
+  for (int i = 0; i < nlocal; i++) maxmol_local = std::max(maxmol_local, molecule[i]);
+  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+
+  std::vector<double> local(2 * (maxmol + 1), 0.0), global(2 * (maxmol + 1), 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    local[2 * molecule[i]] += damage[i][PHI];
+    local[2 * molecule[i] + 1] += 1.0;
+  }
+  MPI_Allreduce(local.data(), global.data(), int(global.size()), MPI_DOUBLE, MPI_SUM, world);
+
+  double sum = 0.0;
+  int ngrains = 0;
+  for (tagint g = 0; g <= maxmol; g++) {
+    if (global[2 * g + 1] == 0.0) continue;
+    sum += global[2 * g] / global[2 * g + 1];
+    ngrains++;
+  }
+  for (int i = 0; i < nlocal; i++) {
+    const tagint g = molecule[i];
+    damage[i][GRAIN] = (mask[i] & groupbit) ? global[2 * g] / global[2 * g + 1] : 0.0;
+  }
+  stats[0] = ngrains ? sum / ngrains : 0.0;
+  stats[3] = ngrains;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputePeridemDamage::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  refresh();
+  scalar = stats[0];
+  return scalar;
+}
+
+void ComputePeridemDamage::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  refresh();
+  vector = stats;
+}
+
+void ComputePeridemDamage::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  refresh();
+  array_atom = damage;
+}
+
+double ComputePeridemDamage::memory_usage()
+{
+  return 5.0 * nmax * sizeof(double);
+}

@@ -1,0 +1,226 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: fix peridem/bonds, the bookkeeping of broken bonds.
+------------------------------------------------------------------------- */
+
+#include "fix_peridem_bonds.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------- */
+
+FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), total(0)
+{
+  if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
+  restart_peratom = 1;
+  comm_reverse = 2;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nmax; i++) nbroken[i] = zbroken[i] = 0.0;
+}
+
+FixPeridemBonds::~FixPeridemBonds()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(nbroken);
+  memory->destroy(zbroken);
+}
+
+int FixPeridemBonds::setmask()
+{
+  return PRE_FORCE | POST_FORCE | MIN_PRE_FORCE | MIN_POST_FORCE;
+}
+
+void FixPeridemBonds::init()
+{
+  broken_here = 0;
+}
+
+/* ----------------------------------------------------------------------
+   ghost entries collect the breaks of bonds whose partner is owned
+   elsewhere: clear them before the forces, send them home after
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::clear_ghosts()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = atom->nlocal; i < nall; i++) nbroken[i] = zbroken[i] = 0.0;
+}
+
+void FixPeridemBonds::collect()
+{
+  comm->reverse_comm_fix(this);
+  clear_ghosts();
+  bigint all = 0;
+  MPI_Allreduce(&broken_here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all) {
+    // every broken bond was counted once (see bond_broken): keep the
+    // global bond count of write_data and thermo right
+    atom->nbonds -= all;
+    total += all;
+  }
+  broken_here = 0;
+}
+
+void FixPeridemBonds::setup_pre_force(int)
+{
+  clear_ghosts();
+}
+void FixPeridemBonds::pre_force(int)
+{
+  clear_ghosts();
+}
+void FixPeridemBonds::min_pre_force(int)
+{
+  clear_ghosts();
+}
+void FixPeridemBonds::setup(int)
+{
+  collect();
+}
+void FixPeridemBonds::min_setup(int)
+{
+  clear_ghosts();
+  collect();
+}
+void FixPeridemBonds::post_force(int)
+{
+  collect();
+}
+void FixPeridemBonds::min_post_force(int)
+{
+  collect();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPeridemBonds::remove_bond(Atom *atom, int i, tagint partner)
+{
+  int &n = atom->num_bond[i];
+  for (int m = 0; m < n; m++) {
+    if (atom->bond_atom[i][m] != partner) continue;
+    atom->bond_atom[i][m] = atom->bond_atom[i][n - 1];
+    atom->bond_type[i][m] = atom->bond_type[i][n - 1];
+    n--;
+    return;
+  }
+}
+
+void FixPeridemBonds::bond_broken(int i1, int i2, double z)
+{
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  // i1 stores the bond and is local. With newton_bond on, the partner's
+  // share goes to its ghost entry and home by reverse communication; with
+  // newton_bond off, the partner's own rank breaks its copy and credits it.
+  nbroken[i1] += 1.0;
+  zbroken[i1] = std::max(zbroken[i1], z);
+  remove_bond(atom, i1, tag[i2]);
+  if (newton_bond || i2 < nlocal) {
+    nbroken[i2] += 1.0;
+    zbroken[i2] = std::max(zbroken[i2], z);
+  }
+  if (i2 < nlocal) remove_bond(atom, i2, tag[i1]);
+  // count each bond once: with newton_bond off and the partner on another
+  // rank, both ranks see it; the one holding the smaller ID counts it
+  if (newton_bond || i2 < nlocal || tag[i1] < tag[i2]) broken_here++;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixPeridemBonds::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    buf[m++] = nbroken[i];
+    buf[m++] = zbroken[i];
+  }
+  return m;
+}
+
+void FixPeridemBonds::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int j = list[k];
+    nbroken[j] += buf[m++];
+    zbroken[j] = std::max(zbroken[j], buf[m++]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPeridemBonds::grow_arrays(int nmax)
+{
+  memory->grow(nbroken, nmax, "peridem/bonds:nbroken");
+  memory->grow(zbroken, nmax, "peridem/bonds:zbroken");
+}
+
+void FixPeridemBonds::set_arrays(int i)
+{
+  nbroken[i] = zbroken[i] = 0.0;
+}
+
+void FixPeridemBonds::copy_arrays(int i, int j, int)
+{
+  nbroken[j] = nbroken[i];
+  zbroken[j] = zbroken[i];
+}
+
+int FixPeridemBonds::pack_exchange(int i, double *buf)
+{
+  buf[0] = nbroken[i];
+  buf[1] = zbroken[i];
+  return 2;
+}
+
+int FixPeridemBonds::unpack_exchange(int nlocal, double *buf)
+{
+  nbroken[nlocal] = buf[0];
+  zbroken[nlocal] = buf[1];
+  return 2;
+}
+
+int FixPeridemBonds::pack_restart(int i, double *buf)
+{
+  buf[0] = 3;
+  buf[1] = nbroken[i];
+  buf[2] = zbroken[i];
+  return 3;
+}
+
+void FixPeridemBonds::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  nbroken[nlocal] = extra[nlocal][m + 1];
+  zbroken[nlocal] = extra[nlocal][m + 2];
+}
+
+int FixPeridemBonds::size_restart(int)
+{
+  return 3;
+}
+
+int FixPeridemBonds::maxsize_restart()
+{
+  return 3;
+}
+
+double FixPeridemBonds::memory_usage()
+{
+  return 2.0 * atom->nmax * sizeof(double);
+}

@@ -1,0 +1,77 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: fix peridem/bonds, the bookkeeping of broken bonds.
+
+   Created by bond_style peridem (ID PERIDEM_BONDS); not meant to be
+   defined in an input script. A broken bond is removed from the bond
+   arrays at once (so its nodes may drift apart without LAMMPS losing a
+   bond partner); this fix remembers, per node and across migration and
+   restarts, how many of its bonds broke and the damage measure Z they had
+   when they broke, for compute peridem/damage.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(peridem/bonds,FixPeridemBonds);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_PERIDEM_BONDS_H
+#define LMP_FIX_PERIDEM_BONDS_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixPeridemBonds : public Fix {
+ public:
+  static constexpr const char *ID = "PERIDEM_BONDS";
+
+  FixPeridemBonds(class LAMMPS *, int, char **);
+  ~FixPeridemBonds() override;
+  int setmask() override;
+  void init() override;
+  void setup_pre_force(int) override;
+  void setup(int) override;
+  void min_setup(int) override;
+  void pre_force(int) override;
+  void post_force(int) override;
+  void min_pre_force(int) override;
+  void min_post_force(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+  // the bond between local or ghost atoms i1, i2 broke with damage term z;
+  // removes it from the bond arrays of the local atoms that store it
+  void bond_broken(int i1, int i2, double z);
+
+  // per atom: number of broken bonds, largest Z term of a broken bond
+  const double *broken_count() const { return nbroken; }
+  const double *broken_z() const { return zbroken; }
+  // number of bonds broken since this fix was created, all ranks
+  bigint total_broken() const { return total; }
+
+ private:
+  double *nbroken, *zbroken;
+  bigint broken_here; // bonds broken on this rank since the last post_force
+  bigint total;
+
+  void clear_ghosts();
+  void collect();
+  static void remove_bond(class Atom *atom, int i, tagint partner);
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,37 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: material files seen from LAMMPS commands.
+
+   Every PERIDEM style that takes material constants accepts
+     material FILE NAME
+   and reads them from a material file (doc/peridem_material_format.md),
+   so an input script never repeats a number. This glue reads the file
+   once per command, checks its units against LAMMPS's, and turns core
+   errors into LAMMPS errors naming the command.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PERIDEM_MATERIAL_H
+#define LMP_PERIDEM_MATERIAL_H
+
+#include "peridem_material.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace PERIDEM {
+
+// The material NAME from FILE; `command` (e.g. "bond_coeff") names the
+// command in error messages. Errors end the run with a LAMMPS error.
+peridem::Material load_material(LAMMPS_NS::LAMMPS *lmp, const std::string &command,
+                                const std::string &file, const std::string &name);
+
+// Micromodulus by name ("constant" or "conic"), LAMMPS error otherwise.
+peridem::Micromodulus parse_micromodulus(LAMMPS_NS::LAMMPS *lmp, const std::string &command,
+                                         const std::string &word);
+const char *micromodulus_name(peridem::Micromodulus m);
+
+} // namespace PERIDEM
+
+#endif

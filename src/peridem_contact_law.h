@@ -1,0 +1,302 @@
+// PERIDEM: pure node-to-node contact law (repulsion, damping, friction) shared by
+// `pair_style peridem/contact` and `fix peridem/wall` (no LAMMPS dependency).
+//
+// References (see shared/seeds/):
+//  [BL]   Bhattacharya & Lipton, "PeriDEM grain shape": eq. (4.1) repulsion and K_n,
+//         eq. (4.3) regularized nonlocal friction, eq. (4.5) nodal damping, Sec. 4.4 self
+//         contact, Sec. 4.5 walls (the wall fills in the partner, see peridem_wall_geometry.h).
+//  [JDBL] Jha, Desai, Bhattacharya & Lipton, "PeriDEM": eq. (16)-(18) normal force, eq. (19)-(20)
+//         Coulomb friction, eq. (21)-(25) restitution damping, eq. (26)-(30) centroid damping,
+//         eq. (36) K_n.
+//
+// Conventions (the same for every function here):
+//   sep  = x_j - x_i      current vector from node i to its partner j; r = |sep|; e = sep/r
+//   vrel = v_i - v_j      velocity of i relative to j ([BL] v(x,y), [JDBL] -(v'-v))
+//   vn   = vrel . e       > 0 while the nodes approach (= -delta_dot of [JDBL] eq. 21)
+//   Forces are the force ON i; the partner receives the opposite force (Newton's third law).
+//   The force is a force (not a density): [BL] eq. (4.1) F_r already carries V_i V_j and the
+//   [JDBL] densities are multiplied by V (their eq. 17, 22 are per volume of x).
+//   A rigid partner (wall) has mass_j = +infinity.
+//
+// Choices where the seeds are ambiguous (each is noted again where it is used):
+//  * K_n for unlike materials: both seeds take the harmonic mean of the BULK MODULI
+//    ([BL] below eq. 4.1, [JDBL] eq. 25 and Sec. 3.2) and then K_n = 18 k_eff/(pi eps^5).  For
+//    equal horizons that equals the harmonic mean of the two K_n; with unlike horizons (not
+//    covered by the seeds) contact_stiffness_mixed() takes the harmonic mean of the two K_n.
+//  * Sign of friction and damping: [BL] eq. (4.3) writes -mu|F_r| e_perp(y,x) and [JDBL]
+//    eq. (19)-(20) -mu|F_n| (I - e e)(v' - v)/|v' - v|; read literally the latter pushes i
+//    ALONG its tangential velocity relative to j (the sign error of one public code).  Here
+//    friction always opposes the tangential part of vrel and damping opposes vn, so the power
+//    F . vrel of both is <= 0.
+//  * [BL] eq. (4.5) prints v/|v| (a unit vector) in the damping force, which contradicts its
+//    own Kelvin-Voigt derivation (c = beta_d V_x V_y, dissipation -c |v_n|^2); we use the
+//    derivation: F_d = -c vn e.
+//  * Masses: [BL] uses the mass rho V_x of the receiving node alone (partner held fixed) in
+//    beta_d and in v_thr / eps_f of eq. (4.3).  That breaks Newton's third law when V_i != V_j
+//    and, for two equal free nodes, makes the "stick" force reverse the relative velocity.  We
+//    use the reduced mass m_red = m_i m_j/(m_i + m_j), which equals the seed's rho V_x for a
+//    rigid partner (walls) and is symmetric.  The restitution formula [JDBL] eq. (23) keeps its
+//    own m_eq = harmonic mean = 2 m_red (eq. 24).
+//  * The stick branch of eq. (4.3) cancels the tangential relative velocity of ONE pair in one
+//    step; a node sticking to several partners at once can still overshoot (inherent to a
+//    pairwise law; the wall applies one friction term per wall).
+//  * Damping acts only while the nodes approach (vn > 0) as [JDBL] eq. (22), (27) state;
+//    [BL] eq. (4.5) (Kelvin-Voigt) damps both ways: ContactParams::damp_approach_only.
+#ifndef PERIDEM_CONTACT_LAW_H
+#define PERIDEM_CONTACT_LAW_H
+
+#include "peridem_bond_law.h" // Micromodulus, ParameterError
+
+#include <cmath>
+#include <limits>
+
+namespace peridem {
+
+constexpr double kContactPi = 3.14159265358979323846;
+
+// ---------------------------------------------------------------------------------------
+// Parameters
+// ---------------------------------------------------------------------------------------
+
+// Normal contact stiffness K_n = 18 k/(pi eps^5)  ([BL] eq. 4.1, [JDBL] eq. 36), k the bulk
+// modulus, eps the horizon.  Units: force/(length volume^2), so K_n (R_c - r) V_i V_j is a force.
+inline double contact_stiffness(double bulk_modulus, double horizon)
+{
+  return 18.0 * bulk_modulus / (kContactPi * std::pow(horizon, 5));
+}
+
+// Harmonic mean 2ab/(a+b) ([BL] below eq. 4.1, [JDBL] eq. 24, 25); written as 2/(1/a + 1/b)
+// so that b = +infinity (a rigid partner) gives 2a.
+inline double harmonic_mean(double a, double b)
+{
+  return 2.0 / (1.0 / a + 1.0 / b);
+}
+
+// Reduced mass m_i m_j/(m_i + m_j) = harmonic_mean/2; m_j = +infinity gives m_i.
+inline double reduced_mass(double m_i, double m_j)
+{
+  return 1.0 / (1.0 / m_i + 1.0 / m_j);
+}
+
+// K_n for two materials with bulk moduli k1, k2 and a common horizon: k_eff = harmonic mean
+// ([JDBL] eq. 25) inserted in eq. 36.
+inline double contact_stiffness(double k1, double k2, double horizon)
+{
+  return contact_stiffness(harmonic_mean(k1, k2), horizon);
+}
+
+// Unlike horizons (not in the seeds): harmonic mean of the two K_n; equals the above when
+// eps1 == eps2.
+inline double contact_stiffness_mixed(double k1, double eps1, double k2, double eps2)
+{
+  return harmonic_mean(contact_stiffness(k1, eps1), contact_stiffness(k2, eps2));
+}
+
+// Damping ratio zeta that gives restitution eps_n for a linear spring-dashpot damped during
+// the whole contact: eps_n = exp(-pi zeta/sqrt(1 - zeta^2))  <=>
+// zeta = -ln(eps_n)/sqrt(pi^2 + ln(eps_n)^2), the factor inside [JDBL] eq. (23).
+inline double damping_ratio_from_restitution(double eps_n)
+{
+  const double l = std::log(eps_n);
+  return -l / std::sqrt(kContactPi * kContactPi + l * l);
+}
+
+// Restitution of a linear spring-dashpot with damping ratio zeta < 1 (closed form):
+//  damped the whole contact:    exp(-pi zeta/sqrt(1-zeta^2))
+//  damped only while approaching (the rebound is undamped, so the rebound speed is
+//  omega_0 * maximum compression):  exp(-zeta/sqrt(1-zeta^2) * atan(sqrt(1-zeta^2)/zeta))
+inline double restitution_from_damping_ratio(double zeta, bool approach_only)
+{
+  if (zeta <= 0.0) return 1.0;
+  const double w = std::sqrt(1.0 - zeta * zeta);
+  if (!approach_only) return std::exp(-kContactPi * zeta / w);
+  return std::exp(-zeta / w * std::atan2(w, zeta));
+}
+
+// Restitution-based dashpot viscosity ([JDBL] eq. 23 nodal, eq. 28 centroid):
+//   beta_n = -2 C ln(eps_n) sqrt(kappa_eff R_c m_eq/(pi^2 + ln(eps_n)^2))
+// m_eq = harmonic mean of the two masses (eq. 24 nodes, eq. 29 grains), kappa_eff eq. 25.
+// It is 2 zeta sqrt(k m) with zeta from damping_ratio_from_restitution, k = kappa_eff R_c and
+// m = m_eq; it yields restitution eps_n exactly only if C^2 kappa_eff R_c m_eq equals the
+// actual contact spring times the reduced mass AND the dashpot acts during the whole contact
+// (see restitution_exact_C and the tests); otherwise C is a calibration constant ([JDBL] uses
+// C-bar = 100).  Units: force/velocity.
+inline double restitution_damping_coefficient(double eps_n, double C, double kappa_eff, double R_c,
+                                              double m_eq)
+{
+  if (eps_n >= 1.0) return 0.0;
+  return 2.0 * C * damping_ratio_from_restitution(eps_n) * std::sqrt(kappa_eff * R_c * m_eq);
+}
+
+// The C that makes eq. (23) reproduce eps_n for an isolated node pair with the contact spring
+// k = K_n_eff V_i V_j and reduced mass m_red = m_eq/2 (damped during the whole contact):
+// C = sqrt(k m_red/(kappa_eff R_c m_eq)) = sqrt(k/(2 kappa_eff R_c)).
+inline double restitution_exact_C(double spring_k, double kappa_eff, double R_c)
+{
+  return std::sqrt(spring_k / (2.0 * kappa_eff * R_c));
+}
+
+enum class ContactDamping {
+  None,
+  Nodal,       // [BL] eq. (4.5): c = 2 r_d sqrt(k m_red), k = K_n V_i V_j
+  Restitution, // [JDBL] eq. (22)-(25): c = beta_n(eps_n, C, kappa_eff, R_c, m_eq)
+};
+// Centroid damping ([JDBL] eq. 26-30) acts between grain centres, not node pairs:
+// see centroid_damping_force() below; the nodal call then uses ContactDamping::None.
+
+enum class ContactFriction {
+  None,
+  Regularized, // [BL] eq. (4.3): stick/slip with v_thr = mu|F_r| dt/m, eps_f = dt/m
+  Coulomb,     // [JDBL] eq. (19)-(20): magnitude mu|F_n| opposing the tangential velocity
+};
+
+struct ContactParams {
+  double Kn = 0.0; // normal stiffness ([BL] eq. 4.1)
+  double Rc = 0.0; // contact radius
+  ContactDamping damping = ContactDamping::None;
+  double r_d = 0.0;       // Nodal: damping ratio in [0, 1]
+  double eps_n = 1.0;     // Restitution: damping parameter (<= 1)
+  double C = 1.0;         // Restitution: constant C > 0
+  double kappa_eff = 0.0; // Restitution: effective bulk modulus ([JDBL] eq. 25)
+  bool damp_approach_only = true;
+  ContactFriction friction = ContactFriction::None;
+  double mu = 0.0; // friction coefficient
+};
+
+// Validates ranges (Kn > 0, Rc > 0, r_d in [0,1], 0 < eps_n <= 1, C > 0, kappa_eff > 0 when
+// Restitution, mu >= 0); throws ParameterError with a message naming the bad value.
+void check_contact_params(const ContactParams &p);
+
+// ---------------------------------------------------------------------------------------
+// Per-pair law
+// ---------------------------------------------------------------------------------------
+
+struct ContactInput {
+  double sep[3] = {0.0, 0.0, 0.0};  // x_j - x_i (z = 0 in 2D)
+  double vrel[3] = {0.0, 0.0, 0.0}; // v_i - v_j
+  double vol_i = 0.0, vol_j = 0.0;  // nodal volumes (wall: vol_j = segment area |S_l|)
+  double mass_i = 0.0;              // rho_i V_i
+  double mass_j = std::numeric_limits<double>::infinity(); // +inf: rigid partner
+  double dt = 0.0;                                         // time step (Regularized friction only)
+  // Self contact ([BL] Sec. 4.4): reference distance |xi| of two nodes of the same grain with
+  // no intact bond; < 0 (default) for nodes of different grains.
+  double ref_dist = -1.0;
+  // Normal force magnitude for the friction bound mu|F_r|; < 0 (default): this pair's own
+  // repulsion.  The wall uses it to apply the net wall repulsion of eq. (4.8) to each wall.
+  double friction_normal_force = -1.0;
+};
+
+struct ContactResult {
+  double f[3] = {0.0, 0.0, 0.0};      // total force on i
+  double f_rep[3] = {0.0, 0.0, 0.0};  // repulsion part
+  double f_damp[3] = {0.0, 0.0, 0.0}; // damping part
+  double f_fric[3] = {0.0, 0.0, 0.0}; // friction part
+  double fpair = 0.0;   // signed normal force magnitude on i along e (<= 0 repulsive):
+                        // f_rep + f_damp = fpair * e (LAMMPS virial convention)
+  double energy = 0.0;  // repulsion energy; f_rep = -dE/dx_i exactly
+  double power = 0.0;   // (f_damp + f_fric) . vrel  (<= 0, rate of dissipation)
+  bool contact = false; // r < effective contact radius
+  bool stick = false;   // Regularized friction in the stick branch
+};
+
+// Effective contact radius and stiffness multiplier for a pair ([BL] Sec. 4.4):
+//   different grains (ref_dist < 0) or |xi| >= R_c:  radius R_c, multiplier 1 (eq. 4.1);
+//   same grain with |xi| < R_c:  radius |xi|, multiplier R_c/|xi|.
+// Sec. 4.4 gives the force density c_w (r - R)/R e for r < R, R = min(|xi|, R_c); with the
+// seed's own identification c_w = K_n R_c (it matches eq. 4.1 for |xi| > R_c) this is
+// F = -K_n (R_c/R) (R - r) V_i V_j e.  Continuous in |xi| at |xi| = R_c.
+struct EffectiveRadius {
+  double radius;
+  double stiffness_factor;
+};
+inline EffectiveRadius effective_contact_radius(double Rc, double ref_dist)
+{
+  if (ref_dist < 0.0 || ref_dist >= Rc) return {Rc, 1.0};
+  return {ref_dist, Rc / ref_dist};
+}
+
+// Repulsion magnitude and energy for distance r (scalar kernel of eq. 4.1 / Sec. 4.4):
+//   F(r) = -K (R - r) V_i V_j  (force on i along e; negative = pushes i away from j)
+//   E(r) = 1/2 K (R - r)^2 V_i V_j,  so  F = dE/dr ... and force on i = -dE/dx_i = F e.
+// Zero for r >= R.  K = K_n * stiffness_factor.
+inline double repulsion_force(double K, double R, double r, double vol_i, double vol_j)
+{
+  return r < R ? -K * (R - r) * vol_i * vol_j : 0.0;
+}
+inline double repulsion_energy(double K, double R, double r, double vol_i, double vol_j)
+{
+  return r < R ? 0.5 * K * (R - r) * (R - r) * vol_i * vol_j : 0.0;
+}
+
+// The single entry point: repulsion + damping + friction between node i and partner j.
+// A wall calls it with sep = centroid of the wall segment minus x_i, vol_j = |S_l|,
+// vrel = v_i - v_wall, mass_j = +inf ([BL] Sec. 4.5 below eq. 4.8).
+ContactResult contact_force(const ContactInput &in, const ContactParams &p);
+
+// ---------------------------------------------------------------------------------------
+// Centroid (grain-level) damping, [JDBL] eq. (26)-(30)
+// ---------------------------------------------------------------------------------------
+// Force on the centre of grain p due to grain p' (both given by centre position z_c and velocity
+// v_c), acting only while the centres approach and while dist(grains) < R_c (the caller checks
+// the distance condition; pass in_contact):
+//   delta_dot_c = (v_c' - v_c) . e_c,   e_c = (z_c' - z_c)/|z_c' - z_c|        (eq. 26)
+//   F = beta_bar delta_dot_c e_c   if delta_dot_c < 0                         (eq. 27 x |Omega_p|)
+// with beta_bar from restitution_damping_coefficient(eps_bar, C_bar, kappa_eff, R_c, M_eq),
+// M_eq = harmonic_mean(M_p, M_p') (eq. 28-29).  Eq. (30): each node x of grain p receives the
+// share F V_x/|Omega_p| (grain_node_share).  Returns the power F . (v_c - v_c') (<= 0).
+double centroid_damping_force(const double sep_c[3], const double vrel_c[3], double beta_bar,
+                              bool in_contact, double f[3]);
+inline double grain_node_share(double node_volume, double grain_volume)
+{
+  return node_volume / grain_volume;
+}
+
+// ---------------------------------------------------------------------------------------
+// Stable time step
+// ---------------------------------------------------------------------------------------
+// Gershgorin bound on the largest frequency of a node (velocity Verlet / central difference is
+// stable for dt < 2/omega_max, and (2/omega)(sqrt(1+zeta^2) - zeta) with damping ratio zeta):
+//  bonds:    omega_b^2 <= 2 sum_j c w(|xi_j|)/|xi_j| V_j / rho, which is Silling & Askari's
+//            dt_b = sqrt(2 rho / sum_j c w V_j/|xi_j|); the sum is approximated by the integral
+//            over the horizon: 2D  constant 2 pi eps c, conic pi eps c;
+//                              3D  constant 2 pi eps^2 c, conic (2/3) pi eps^2 c.
+//  contact:  n_c partners each a spring K_n V^2 (V the largest nodal volume) on the smallest
+//            nodal mass m: omega_c^2 <= 2 n_c K_n V^2/m; dt_c = sqrt(2 m/(n_c K_n V^2)) times
+//            the damping factor.  Default n_c: nodes of volume V in the contact ball,
+//            ceil(|B_Rc|/V), plus the wall equivalent ceil(k_wall/(K_n V^2)) with the wall
+//            stiffness at contact k_wall = 2 K_n V R_c^2 (2D) or pi K_n V R_c^3 (3D).
+//  combined: omega^2 <= omega_b^2 + omega_c^2  =>  dt = 1/sqrt(1/dt_b^2 + 1/dt_c^2);
+//            recommended = safety * dt.
+struct TimeStepInput {
+  int dimension = 3;
+  double rho = 0.0; // density
+  double c = 0.0;   // bond constant c (peridem_bond_law.h); 0: no bonds
+  Micromodulus micromodulus = Micromodulus::Constant;
+  double horizon = 0.0;
+  double node_volume = 0.0;   // largest nodal volume
+  double min_node_mass = 0.0; // smallest nodal mass
+  double Kn = 0.0;            // 0: no contact
+  double Rc = 0.0;
+  double damping_ratio = 0.0; // contact damping ratio (r_d, or zeta of eq. 23)
+  int n_contacts = 0;         // 0: default above
+  double safety = 0.8;
+};
+struct TimeStepEstimate {
+  double dt_bond = std::numeric_limits<double>::infinity();
+  double dt_contact = std::numeric_limits<double>::infinity();
+  double dt_critical = std::numeric_limits<double>::infinity();    // combined
+  double dt_recommended = std::numeric_limits<double>::infinity(); // safety * dt_critical
+  int n_contacts = 0;
+};
+TimeStepEstimate stable_time_step(const TimeStepInput &in);
+
+// Silling-Askari bond bound from an explicit sum S = sum_j c w(|xi_j|) V_j/|xi_j| over the
+// bonds of the stiffest node: dt_b = sqrt(2 rho/S).
+inline double bond_critical_time_step(double rho, double sum_c_w_vol_over_xi)
+{
+  return std::sqrt(2.0 * rho / sum_c_w_vol_over_xi);
+}
+
+} // namespace peridem
+
+#endif

@@ -1,0 +1,130 @@
+// Cell-list bond search, pruning and notch/crack bond removal.
+#include "peridem_geometry_bonds.h"
+#include "peridem_geometry_predicates.h"
+#include "peridem_geometry_visibility.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace peridem {
+
+std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, double eps)
+{
+  if (dim < 1 || dim > 3) throw GeometryError("pairsWithinHorizon: dim must be 1, 2 or 3");
+  if (!(eps > 0.0) || !std::isfinite(eps)) throw GeometryError("horizon must be positive");
+  const std::size_t n = c.size() / dim;
+  std::vector<Bond> bonds;
+  if (n < 2) return bonds;
+  double lo[3] = {0, 0, 0};
+  for (int d = 0; d < dim; ++d) {
+    lo[d] = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) lo[d] = std::min(lo[d], c[i * dim + d]);
+  }
+  // Cells slightly larger than the (slackened) horizon: every bond joins
+  // points in the same or adjacent cells.
+  const double cell = eps * (1.0 + 1e-9);
+  constexpr std::int64_t kStride = std::int64_t(1) << 20; // cells per axis
+  auto cellOf = [&](std::size_t i, int d) {
+    return static_cast<std::int64_t>(std::floor((c[i * dim + d] - lo[d]) / cell));
+  };
+  auto key = [&](const std::int64_t *ic) {
+    std::int64_t k = 0;
+    for (int d = 0; d < dim; ++d) k = k * kStride + ic[d];
+    return k;
+  };
+  std::vector<std::pair<std::int64_t, int>> sorted(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int64_t ic[3] = {0, 0, 0};
+    for (int d = 0; d < dim; ++d) {
+      ic[d] = cellOf(i, d);
+      if (ic[d] >= kStride - 1) throw GeometryError("horizon too small for the grain extent");
+    }
+    sorted[i] = {key(ic), static_cast<int>(i)};
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const int span = dim == 1 ? 3 : dim == 2 ? 9 : 27;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int64_t ic[3] = {0, 0, 0};
+    for (int d = 0; d < dim; ++d) ic[d] = cellOf(i, d);
+    for (int s = 0; s < span; ++s) {
+      std::int64_t jc[3] = {0, 0, 0};
+      bool valid = true;
+      for (int d = 0, r = s; d < dim; ++d, r /= 3) {
+        jc[d] = ic[d] + (r % 3) - 1;
+        valid = valid && jc[d] >= 0;
+      }
+      if (!valid) continue;
+      const std::int64_t k = key(jc);
+      auto it = std::lower_bound(sorted.begin(), sorted.end(), std::make_pair(k, -1));
+      for (; it != sorted.end() && it->first == k; ++it) {
+        const std::size_t j = static_cast<std::size_t>(it->second);
+        if (j <= i) continue; // each pair once, never i == j
+        double d2 = 0.0;
+        for (int d = 0; d < dim; ++d) {
+          const double dx = c[j * dim + d] - c[i * dim + d];
+          d2 += dx * dx;
+        }
+        if (withinHorizon(d2, eps)) bonds.emplace_back(static_cast<int>(i), static_cast<int>(j));
+      }
+    }
+  }
+  std::sort(bonds.begin(), bonds.end());
+  return bonds;
+}
+
+std::vector<Bond> pairsWithinHorizon(const std::vector<Vec2> &x, double eps)
+{
+  std::vector<double> c;
+  c.reserve(2 * x.size());
+  for (const Vec2 &p : x) {
+    c.push_back(p.x);
+    c.push_back(p.y);
+  }
+  return pairsWithinHorizon(c, 2, eps);
+}
+
+std::vector<Bond> createBonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
+                              Pruning pruning)
+{
+  std::vector<Bond> bonds = pairsWithinHorizon(x, eps);
+  if (pruning == Pruning::None) return bonds;
+  if (pruning == Pruning::Seed) {
+    const SeedPruner pruner(D);
+    if (pruner.convex()) return bonds;
+    bonds.erase(
+        std::remove_if(bonds.begin(), bonds.end(),
+                       [&](const Bond &b) { return !pruner.keeps(x[b.first], x[b.second]); }),
+        bonds.end());
+  } else {
+    bonds.erase(std::remove_if(
+                    bonds.begin(), bonds.end(),
+                    [&](const Bond &b) { return !segmentInsideExact(D, x[b.first], x[b.second]); }),
+                bonds.end());
+  }
+  return bonds;
+}
+
+bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut)
+{
+  return orient2d(cut.a, cut.b, xi) * orient2d(cut.a, cut.b, xj) < 0 &&
+         orient2d(xi, xj, cut.a) * orient2d(xi, xj, cut.b) <= 0;
+}
+
+std::size_t removeBondsCrossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,
+                                const std::vector<CutSegment> &cuts)
+{
+  const std::size_t before = bonds.size();
+  bonds.erase(std::remove_if(bonds.begin(), bonds.end(),
+                             [&](const Bond &b) {
+                               for (const auto &cut : cuts)
+                                 if (bondCrossesCut(x.at(b.first), x.at(b.second), cut))
+                                   return true;
+                               return false;
+                             }),
+              bonds.end());
+  return before - bonds.size();
+}
+
+} // namespace peridem

@@ -1,0 +1,61 @@
+// Peridynamic bonds inside one grain: all node pairs within the horizon
+// (|xi| <= eps, i < j, each pair once), found with a cell list so the cost is
+// linear in the number of nodes, optionally pruned to the bonds whose segment
+// stays in the grain (grain-shape seed §5), and removal of bonds that cross
+// pre-notches / cracks (seed §6.2, §6.4: "bonds across the notch are removed
+// in the reference configuration").
+#ifndef PERIDEM_GEOMETRY_BONDS_H
+#define PERIDEM_GEOMETRY_BONDS_H
+
+#include "peridem_geometry_polygon.h"
+
+#include <utility>
+#include <vector>
+
+namespace peridem {
+
+// Bond between nodes i < j of one grain (local indices).
+using Bond = std::pair<int, int>;
+
+// |xi|^2 <= eps^2 up to a relative 1e-10, so that lattice pairs exactly at
+// the horizon (e.g. eps = 3h along an axis) are kept despite round-off.
+inline bool withinHorizon(double dist2, double eps)
+{
+  return dist2 <= eps * eps * (1.0 + 1e-10);
+}
+
+// All pairs i < j with withinHorizon(|x_i - x_j|^2, eps), sorted. `coords` is
+// n points of `dim` (1..3) consecutive doubles. Cell list with cell size eps:
+// O(n * neighbours), not O(n^2).
+std::vector<Bond> pairsWithinHorizon(const std::vector<double> &coords, int dim, double eps);
+std::vector<Bond> pairsWithinHorizon(const std::vector<Vec2> &x, double eps);
+
+enum class Pruning {
+  None,  // keep every pair within the horizon (convex grains)
+  Seed,  // grain-shape seed §5 (extended boundary + cusp bisectors)
+  Exact, // exact segment-in-shape reference test
+};
+
+// Bonds of one 2D grain D with nodes x (inside D) and horizon eps.
+std::vector<Bond> createBonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
+                              Pruning pruning = Pruning::Seed);
+
+// A straight cut (pre-notch or crack) in reference coordinates.
+struct CutSegment {
+  Vec2 a, b;
+};
+
+// A bond crosses a cut if its end points lie strictly on opposite sides of the
+// cut's line and the crossing point lies on the closed cut. Bonds that only
+// touch the cut line at an end node, or run along it, are not cut.
+bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut);
+
+// Removes from `bonds` every bond crossing any cut; works on any bond list
+// with reference positions x (e.g. bonds read from a LAMMPS data file).
+// Returns the number of bonds removed.
+std::size_t removeBondsCrossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,
+                                const std::vector<CutSegment> &cuts);
+
+} // namespace peridem
+
+#endif

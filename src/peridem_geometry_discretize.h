@@ -1,0 +1,73 @@
+// Discretization of a 2D grain into peridynamic nodes with nodal volumes.
+//
+// (a) Regular square lattice clipped to the shape (grain-shape seed §6-7 use
+//     uniform mesh size h); the nodal volume is the cell area h^2 or,
+//     optionally, the exact area of the lattice cell clipped to the shape.
+// (b) Gmsh meshes (PeriDEM seed §3.1): nodes at the mesh vertices, nodal
+//     volume V_i = sum over elements T_e containing i of int_{T_e} phi_i dx
+//     (eq. 31) with the P1 (triangle) / Q1 (quad) interpolation functions.
+#ifndef PERIDEM_GEOMETRY_DISCRETIZE_H
+#define PERIDEM_GEOMETRY_DISCRETIZE_H
+
+#include "peridem_geometry_polygon.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace peridem {
+
+// Nodes of one grain: reference positions and nodal volumes (areas in 2D).
+struct Nodes2D {
+  std::vector<Vec2> x;
+  std::vector<double> volume;
+  std::size_t size() const { return x.size(); }
+};
+
+enum class NodalVolume {
+  CellArea,  // V = h^2 for every node (default)
+  ExactClip, // V = |cell cap D|; sums to |D| to round-off
+};
+
+struct LatticeOptions {
+  // Lattice points are offset + (i h, j h) for integers i, j.
+  Vec2 offset{0.0, 0.0};
+  NodalVolume volume = NodalVolume::CellArea;
+};
+
+// Square lattice of spacing h clipped to D. A lattice point is kept if it is
+// inside the closed shape up to 1e-9 h (so points meant to lie on the boundary
+// survive round-off); such a point that is exactly outside is moved onto/inside
+// the boundary by a few ulps, so every node satisfies D.containsExact().
+// With ExactClip, the area of a cell whose centre is outside D is given to the
+// nearest node, so the volumes sum to |D|.
+Nodes2D latticeNodes(const Polygon &D, double h, const LatticeOptions &opt = {});
+
+// Exact area of the axis-aligned box [lo, hi] intersected with D
+// (Sutherland-Hodgman clipping of every ring against the box; hole rings are
+// clockwise and subtract themselves).
+double clippedBoxArea(const Polygon &D, const Vec2 &lo, const Vec2 &hi);
+
+// A 2D mesh as read from Gmsh: vertex coordinates (z dropped) and linear
+// elements, 0-based vertex indices.
+struct Mesh2D {
+  std::vector<Vec2> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<int, 4>> quads;
+  double area() const;
+};
+
+// Reads an ASCII Gmsh file, format 2.2 or 4.1, keeping 3-node triangles
+// (type 2) and 4-node quads (type 3); lines and points are ignored. Errors
+// (missing file, binary or other versions, malformed lines, unknown node tags,
+// higher-order elements, no 2D element) name the file and line.
+Mesh2D readGmshMesh(const std::string &path);
+
+// Nodes at mesh vertices with volumes from eq. 31: each triangle gives |T|/3 to
+// each of its vertices, each quad the integrals of its bilinear shape
+// functions (2x2 Gauss, exact). Vertices used by no element are dropped.
+Nodes2D meshNodes(const Mesh2D &mesh);
+
+} // namespace peridem
+
+#endif

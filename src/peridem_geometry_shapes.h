@@ -1,0 +1,69 @@
+// Built-in parametric grain shapes and the user polygon file reader.
+//
+// The shapes are those of the grain-shape seed §6.2-6.4 and §7.2 (perturbed
+// disks, squares, plus shapes, rings, notched plates) plus a few common extras
+// (rectangle, regular polygon/hexagon, concave "neck"). Every shape is centred
+// at the origin; place it with Polygon::rotate()/translate().
+#ifndef PERIDEM_GEOMETRY_SHAPES_H
+#define PERIDEM_GEOMETRY_SHAPES_H
+
+#include "peridem_geometry_polygon.h"
+
+#include <cstdint>
+#include <iosfwd>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace peridem {
+
+Polygon makeDisk(double radius, int segments);
+Polygon makeRectangle(double width, double height);
+Polygon makeRegularPolygon(double radius, int sides);
+// Plus/cross (§6.3, §7.2): arm tips at distance `radius` (the half length R)
+// from the centre, arms of full width `armWidth`.
+Polygon makePlus(double radius, double armWidth);
+// Annulus (§7.2): inner radius tau * outer radius, tau = 0.6 in the seed.
+Polygon makeRing(double outerRadius, double innerRadius, int segments);
+// Randomly perturbed disk (§7.2): vertices (r_i cos t_i, r_i sin t_i),
+// t_i = 2 pi i / N, r_i = R (1 - X_i), X_i iid uniform on [0, 1 - phi]
+// (phi = roundness). Deterministic for a given seed on every platform.
+Polygon makePerturbedDisk(double radius, int vertices, double roundness, std::uint64_t seed);
+// Concave hourglass: length x width rectangle pinched to neckWidth at x = 0.
+Polygon makeNeck(double length, double width, double neckWidth);
+// Plate width x height with a notch cut from the middle of the left edge
+// (§6.4: square plate, notch of length 0.5 reaching the centre). Rectangular
+// notch of the given width, or a V notch whose opening at the edge is notchWidth.
+Polygon makeNotchedPlate(double width, double height, double notchLength, double notchWidth,
+                         bool vNotch);
+
+// Parameter table of a built-in shape (names as in the seed, defaults for a
+// grain of characteristic size 1).
+struct ShapeParameter {
+  std::string name;
+  double defaultValue;
+  std::string description;
+};
+struct ShapeInfo {
+  std::string name;
+  std::string description;
+  std::vector<ShapeParameter> parameters;
+};
+const std::vector<ShapeInfo> &builtinShapes();
+std::vector<std::string> builtinShapeNames();
+// Comma-separated list of the built-in shape names, for error messages.
+std::string builtinShapeList();
+
+// Builds a built-in shape by name. Parameters not given take their defaults;
+// unknown shape or parameter names and bad values throw GeometryError listing
+// the valid choices. The result is validated.
+Polygon makeShape(const std::string &name, const std::map<std::string, double> &params = {});
+
+// User polygon files (format: doc/peridem_polygon_format.md). Errors name the
+// file and the line. The result is validated.
+Polygon readPolygonFile(const std::string &path);
+Polygon parsePolygon(std::istream &in, const std::string &sourceName);
+
+} // namespace peridem
+
+#endif
