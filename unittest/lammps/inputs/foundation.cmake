@@ -2,7 +2,6 @@
 peridem_add_example_test(grain_block grain-block in.grain_block 1 2)
 
 # atom_style peridem: bad Atoms lines in data files
-set(_in ${CMAKE_CURRENT_SOURCE_DIR}/inputs)
 peridem_add_error_test(atom_zero_volume ${_in}/read_data.in "Invalid volume 0 for atom 2"
   -var inputs ${_in} -var data bad_volume.data)
 peridem_add_error_test(atom_negative_density ${_in}/read_data.in "Invalid density -1 for atom 2"
@@ -20,7 +19,7 @@ add_test(NAME python.lmp_command_route
 # Debian's python3-lammps belongs to Debian's python3, not to one earlier on PATH
 find_program(PERIDEM_DEBIAN_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 add_test(NAME python.module_route
-  COMMAND ${PERIDEM_DEBIAN_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/python_module_route.py
+  COMMAND ${PERIDEM_DEBIAN_PYTHON} ${_in}/../python_module_route.py
           ${PROJECT_SOURCE_DIR}/python ${_in})
 set_tests_properties(python.lmp_command_route python.module_route PROPERTIES
   ENVIRONMENT "PERIDEM_LIBRARY=$<TARGET_FILE:peridem>"
