@@ -579,3 +579,10 @@ void *BondPeridem::extract(const char *str, int &dim)
   if (strcmp(str, "nbroken") == 0) return (void *)&nbroken;
   return nullptr;
 }
+
+/* ---------------------------------------------------------------------- */
+
+double BondPeridem::memory_usage()
+{
+  return Bond::memory_usage() + cache.capacity() * sizeof(BondCache);
+}

@@ -37,6 +37,7 @@ class BondPeridem : public Bond {
   void write_data(FILE *) override;
   double single(int, double, int, int, double &) override;
   void *extract(const char *, int &) override;
+  double memory_usage() override;
 
   // number of bonds this rank broke since the start (tests, thermo via extract)
   bigint nbroken_local() const { return nbroken; }

@@ -111,7 +111,7 @@ void ComputePeridemDamage::count_bonds()
 
   for (int i = 0; i < nall; i++) intact[i] = zintact[i] = 0.0;
 
-  double bonds_local = 0.0;
+  double bonds_local[2] = {0.0, 0.0}; // intact bonds, broken-bond ends
   for (int i = 0; i < nlocal; i++) {
     for (int m = 0; m < atom->num_bond[i]; m++) {
       const int type = atom->bond_type[i][m];
@@ -135,7 +135,7 @@ void ComputePeridemDamage::count_bonds()
         intact[j] += 1.0;
         zintact[j] = std::max(zintact[j], z);
       }
-      if (newton_bond || tag[i] < partner) bonds_local += 1.0;
+      if (newton_bond || tag[i] < partner) bonds_local[0] += 1.0;
     }
   }
   if (newton_bond) comm->reverse_comm_compute(this);
@@ -149,11 +149,13 @@ void ComputePeridemDamage::count_bonds()
     damage[i][PHI] =
         in_group ? peridem::bond_fraction_damage(broken, broken + std::lround(intact[i])) : 0.0;
     damage[i][ZMAX] = in_group ? std::max(zintact[i], zbroken[i]) : 0.0;
+    bonds_local[1] += nbroken[i];
   }
-  double bonds_all = 0.0;
-  MPI_Allreduce(&bonds_local, &bonds_all, 1, MPI_DOUBLE, MPI_SUM, world);
-  stats[1] = bonds_fix->total_broken();
-  stats[2] = bonds_all + stats[1];
+  // a broken bond is counted at both of its nodes
+  double bonds_all[2];
+  MPI_Allreduce(bonds_local, bonds_all, 2, MPI_DOUBLE, MPI_SUM, world);
+  stats[1] = 0.5 * bonds_all[1];
+  stats[2] = bonds_all[0] + stats[1];
 }
 
 int ComputePeridemDamage::pack_reverse_comm(int n, int first, double *buf)

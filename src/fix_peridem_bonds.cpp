@@ -18,7 +18,7 @@ using namespace FixConst;
 /* ---------------------------------------------------------------------- */
 
 FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), total(0)
+    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
   restart_peratom = 1;
@@ -64,12 +64,9 @@ void FixPeridemBonds::collect()
   clear_ghosts();
   bigint all = 0;
   MPI_Allreduce(&broken_here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (all) {
-    // every broken bond was counted once (see bond_broken): keep the
-    // global bond count of write_data and thermo right
-    atom->nbonds -= all;
-    total += all;
-  }
+  // every broken bond was counted once (see bond_broken): keep the global
+  // bond count of write_data and thermo right
+  atom->nbonds -= all;
   broken_here = 0;
 }
 

@@ -58,13 +58,10 @@ class FixPeridemBonds : public Fix {
   // per atom: number of broken bonds, largest Z term of a broken bond
   const double *broken_count() const { return nbroken; }
   const double *broken_z() const { return zbroken; }
-  // number of bonds broken since this fix was created, all ranks
-  bigint total_broken() const { return total; }
 
  private:
   double *nbroken, *zbroken;
   bigint broken_here; // bonds broken on this rank since the last post_force
-  bigint total;
 
   void clear_ghosts();
   void collect();

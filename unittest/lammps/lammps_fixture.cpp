@@ -49,7 +49,11 @@ void LammpsTest::TearDown()
 {
   delete lmp;
   lmp = nullptr;
-  std::filesystem::remove_all(scratch_dir);
+  int me = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::error_code ec;
+  if (me == 0) std::filesystem::remove_all(scratch_dir, ec);
 }
 
 void LammpsTest::command(const std::string &line)
