@@ -9,16 +9,21 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "update.h"
 
 #include <algorithm>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
+namespace {
+enum { COUNTS, PARTNERS };
+}
+
 /* ---------------------------------------------------------------------- */
 
 FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0)
+    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
   restart_peratom = 1;
@@ -60,14 +65,51 @@ void FixPeridemBonds::clear_ghosts()
 
 void FixPeridemBonds::collect()
 {
+  comm_mode = COUNTS;
   comm->reverse_comm_fix(this);
   clear_ghosts();
   bigint all = 0;
   MPI_Allreduce(&broken_here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  broken_here = 0;
+  if (all == 0) return;
   // every broken bond was counted once (see bond_broken): keep the global
   // bond count of write_data and thermo right
   atom->nbonds -= all;
-  broken_here = 0;
+
+  // the special lists of both nodes forget each other, so the next
+  // neighbour list holds the pair and contact acts between the pieces
+  if (force->newton_bond) {
+    comm_mode = PARTNERS;
+    comm->reverse_comm_fix_variable(this);
+  }
+  const int nlocal = atom->nlocal;
+  for (const auto &[i, partners] : lost_partners)
+    if (i < nlocal)
+      for (tagint p : partners) forget_partner(i, p);
+  lost_partners.clear();
+  // with a pair style, rebuild the neighbour lists at the next step
+  if (force->pair) {
+    force_reneighbor = 1;
+    next_reneighbor = update->ntimestep + 1;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   remove a partner from the 1-2 part of atom i's special list
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::forget_partner(int i, tagint partner)
+{
+  int *nspecial = atom->nspecial[i];
+  tagint *special = atom->special[i];
+  for (int k = 0; k < nspecial[0]; k++) {
+    if (special[k] != partner) continue;
+    for (int m = k; m < nspecial[2] - 1; m++) special[m] = special[m + 1];
+    nspecial[0]--;
+    nspecial[1]--;
+    nspecial[2]--;
+    return;
+  }
 }
 
 void FixPeridemBonds::setup_pre_force(int)
@@ -125,11 +167,17 @@ void FixPeridemBonds::bond_broken(int i1, int i2, double z)
   nbroken[i1] += 1.0;
   zbroken[i1] = std::max(zbroken[i1], z);
   remove_bond(atom, i1, tag[i2]);
+  forget_partner(i1, tag[i2]);
   if (newton_bond || i2 < nlocal) {
     nbroken[i2] += 1.0;
     zbroken[i2] = std::max(zbroken[i2], z);
   }
-  if (i2 < nlocal) remove_bond(atom, i2, tag[i1]);
+  if (i2 < nlocal) {
+    remove_bond(atom, i2, tag[i1]);
+    forget_partner(i2, tag[i1]);
+  } else if (newton_bond) {
+    lost_partners[i2].push_back(tag[i1]);
+  }
   // count each bond once: with newton_bond off and the partner on another
   // rank, both ranks see it; the one holding the smaller ID counts it
   if (newton_bond || i2 < nlocal || tag[i1] < tag[i2]) broken_here++;
@@ -137,12 +185,33 @@ void FixPeridemBonds::bond_broken(int i1, int i2, double z)
 
 /* ---------------------------------------------------------------------- */
 
+int FixPeridemBonds::pack_reverse_comm_size(int n, int first)
+{
+  int size = 0;
+  for (int i = first; i < first + n; i++) {
+    const auto found = lost_partners.find(i);
+    size += 1 + (found == lost_partners.end() ? 0 : int(found->second.size()));
+  }
+  return size;
+}
+
 int FixPeridemBonds::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++) {
-    buf[m++] = nbroken[i];
-    buf[m++] = zbroken[i];
+    if (comm_mode == COUNTS) {
+      buf[m++] = nbroken[i];
+      buf[m++] = zbroken[i];
+      continue;
+    }
+    const auto found = lost_partners.find(i);
+    if (found == lost_partners.end()) {
+      buf[m++] = 0.0;
+      continue;
+    }
+    buf[m++] = double(found->second.size());
+    for (tagint p : found->second) buf[m++] = ubuf(p).d;
+    lost_partners.erase(found);
   }
   return m;
 }
@@ -152,8 +221,13 @@ void FixPeridemBonds::unpack_reverse_comm(int n, int *list, double *buf)
   int m = 0;
   for (int k = 0; k < n; k++) {
     const int j = list[k];
-    nbroken[j] += buf[m++];
-    zbroken[j] = std::max(zbroken[j], buf[m++]);
+    if (comm_mode == COUNTS) {
+      nbroken[j] += buf[m++];
+      zbroken[j] = std::max(zbroken[j], buf[m++]);
+      continue;
+    }
+    const int count = static_cast<int>(buf[m++]);
+    for (int c = 0; c < count; c++) lost_partners[j].push_back((tagint)ubuf(buf[m++]).i);
   }
 }
 

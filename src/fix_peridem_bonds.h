@@ -20,6 +20,9 @@ FixStyle(peridem/bonds,FixPeridemBonds);
 
 #include "fix.h"
 
+#include <unordered_map>
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class FixPeridemBonds : public Fix {
@@ -47,6 +50,7 @@ class FixPeridemBonds : public Fix {
   void unpack_restart(int, int) override;
   int size_restart(int) override;
   int maxsize_restart() override;
+  int pack_reverse_comm_size(int, int) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
@@ -62,6 +66,13 @@ class FixPeridemBonds : public Fix {
  private:
   double *nbroken, *zbroken;
   bigint broken_here; // bonds broken on this rank since the last post_force
+  // newton_bond on: partners (by tag) that atoms at these local or ghost
+  // indices lost this step; they travel home by reverse communication and
+  // leave the special lists there
+  std::unordered_map<int, std::vector<tagint>> lost_partners;
+  int comm_mode; // which reverse communication is under way
+
+  void forget_partner(int i, tagint partner);
 
   void clear_ghosts();
   void collect();

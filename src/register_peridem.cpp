@@ -15,13 +15,22 @@
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
 #include "compute_peridem_damage.h"
+#include "create_peridem_grains.h"
+#include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
+#include "fix_peridem_wall.h"
+#include "pair_peridem_contact.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
 
 template <typename T> AtomVec *atom_vec_creator(LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+
+template <typename T> Pair *pair_creator(LAMMPS *lmp)
 {
   return new T(lmp);
 }
@@ -41,17 +50,27 @@ template <typename T> Compute *compute_creator(LAMMPS *lmp, int narg, char **arg
   return new T(lmp, narg, arg);
 }
 
+template <typename T> Command *command_creator(LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+
 // One line per style. New styles are added here and in the list of names.
 void insert_styles(LAMMPS *lmp)
 {
   (*lmp->atom->avec_map)["peridem"] = &atom_vec_creator<AtomVecPeridem>;
   (*lmp->force->bond_map)["peridem"] = &bond_creator<BondPeridem>;
+  (*lmp->force->pair_map)["peridem/contact"] = &pair_creator<PairPeridemContact>;
   (*lmp->modify->fix_map)["peridem/bonds"] = &fix_creator<FixPeridemBonds>;
+  (*lmp->modify->fix_map)["peridem/wall"] = &fix_creator<FixPeridemWall>;
   (*lmp->modify->compute_map)["peridem/damage"] = &compute_creator<ComputePeridemDamage>;
+  (*lmp->input->command_map)["create_peridem_grains"] = &command_creator<CreatePeridemGrains>;
+  (*lmp->input->command_map)["cut_peridem_bonds"] = &command_creator<CutPeridemBonds>;
 }
 
-const char *const style_names[] = {"atom_style peridem", "bond_style peridem",
-                                   "compute peridem/damage", "fix peridem/bonds", nullptr};
+const char *const style_names[] = {
+    "atom_style peridem", "bond_style peridem", "pair_style peridem/contact",    "compute peridem/damage", "fix peridem/bonds",
+    "fix peridem/wall",   "create_peridem_grains", "cut_peridem_bonds",      nullptr};
 
 } // namespace
 

@@ -9,8 +9,10 @@
 #include "lammps.h"
 #include "library.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -65,6 +67,16 @@ void check_damage(LAMMPS *lmp, const char *what)
     EXPECT_NEAR(d[i][0], e.first, 1e-15) << what << ": phi of atom " << tag;
     EXPECT_NEAR(d[i][1], e.second, 1e-12) << what << ": Z of atom " << tag;
     EXPECT_NEAR(d[i][2], tag <= 4 ? GRAIN1 : 0.0, 1e-15) << what << ": grain of atom " << tag;
+  }
+  // broken bonds leave the special lists of both nodes (contact exclusion)
+  const std::map<tagint, std::vector<tagint>> partners = {
+      {1, {2, 3}}, {2, {1, 3}}, {3, {1, 2}}, {4, {}}, {5, {6, 7}}, {6, {5, 7}}, {7, {5, 6}}};
+  for (const auto &[tag, expected] : partners) {
+    const int i = lmp->atom->map(tag);
+    if (i < 0 || i >= lmp->atom->nlocal) continue;
+    std::vector<tagint> got(lmp->atom->special[i], lmp->atom->special[i] + lmp->atom->nspecial[i][0]);
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, expected) << what << ": 1-2 special list of atom " << tag;
   }
   auto *v = static_cast<double *>(lammps_extract_compute(lmp, "dmg", 0, 1));
   EXPECT_NEAR(v[0], GRAIN1 / 2.0, 1e-15) << what << ": bulk damage";

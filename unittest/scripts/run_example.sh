@@ -12,7 +12,7 @@ for np in "$@"; do
   dir="$out/np$np"
   rm -rf "$dir"; mkdir -p "$dir"
   cp -r "$src"/. "$dir"/
-  (cd "$dir" && mpirun -np "$np" "$lmp" -in "$input" -log log.lammps -echo none -screen none) || {
+  (cd "$dir" && mpirun -np "$np" "$lmp" -in "$input" -var potentials "$here/../../potentials" -log log.lammps -echo none -screen none) || {
     echo "FAIL: $input on $np rank(s) exited with $?"; tail -n 30 "$dir/log.lammps"; exit 1; }
   logs+=("$dir/log.lammps")
 done

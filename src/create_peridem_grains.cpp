@@ -1,0 +1,663 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: command create_peridem_grains, see
+   doc/create_peridem_grains.rst.
+------------------------------------------------------------------------- */
+
+#include "create_peridem_grains.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "lmp_peridem_material.h"
+#include "lmp_peridem_topology.h"
+
+#include "peridem_geometry_grain.h"
+#include "peridem_geometry_shapes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr const char *CMD = "create_peridem_grains";
+
+// 3D primitives and their size parameters (defaults: unit size)
+const std::map<std::string, std::map<std::string, double>> &solid_shapes()
+{
+  static const std::map<std::string, std::map<std::string, double>> shapes = {
+      {"sphere", {{"radius", 1.0}}},
+      {"box", {{"lx", 1.0}, {"ly", 1.0}, {"lz", 1.0}}},
+      {"cylinder", {{"radius", 1.0}, {"height", 1.0}}}};
+  return shapes;
+}
+
+const peridem::ShapeInfo *builtin_shape(const std::string &name)
+{
+  for (const auto &s : peridem::builtinShapes())
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+// uniform double in [0, 1) from the raw 64-bit output (same on every platform)
+double uniform(std::mt19937_64 &gen)
+{
+  return static_cast<double>(gen() >> 11) * 0x1.0p-53;
+}
+
+struct Rotation {
+  double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  static Rotation about_z(double angle)
+  {
+    Rotation r;
+    const double c = std::cos(angle), s = std::sin(angle);
+    r.m[0][0] = c;
+    r.m[0][1] = -s;
+    r.m[1][0] = s;
+    r.m[1][1] = c;
+    return r;
+  }
+  // uniformly random orientation (Shoemake's unit quaternion)
+  static Rotation random3d(double u1, double u2, double u3)
+  {
+    const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+    const double w = b * std::cos(2 * M_PI * u3), x = a * std::sin(2 * M_PI * u2),
+                 y = a * std::cos(2 * M_PI * u2), z = b * std::sin(2 * M_PI * u3);
+    Rotation r;
+    r.m[0][0] = 1 - 2 * (y * y + z * z);
+    r.m[0][1] = 2 * (x * y - w * z);
+    r.m[0][2] = 2 * (x * z + w * y);
+    r.m[1][0] = 2 * (x * y + w * z);
+    r.m[1][1] = 1 - 2 * (x * x + z * z);
+    r.m[1][2] = 2 * (y * z - w * x);
+    r.m[2][0] = 2 * (x * z - w * y);
+    r.m[2][1] = 2 * (y * z + w * x);
+    r.m[2][2] = 1 - 2 * (x * x + y * y);
+    return r;
+  }
+};
+
+/* Owned atoms in cells of size >= the overlap distance, for the test
+   "does a new node come closer than d to an existing atom" in O(1) per node.
+   Periodic dimensions wrap, distances are minimum-image. */
+class OverlapGrid {
+ public:
+  OverlapGrid(Domain *domain, double d) : domain(domain), d(d)
+  {
+    const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+    for (int k = 0; k < 3; k++) {
+      wrap[k] = periodic[k];
+      ncell[k] = wrap[k] ? std::max(1, static_cast<int>(domain->prd[k] / d)) : 0;
+      size[k] = wrap[k] ? domain->prd[k] / ncell[k] : d;
+    }
+  }
+
+  void insert(const double *x, tagint tag)
+  {
+    int c[3];
+    cell(x, c);
+    cells[key(c)].push_back({{x[0], x[1], x[2]}, tag});
+  }
+
+  // smallest ID of an atom closer than d to x, 0 if none
+  tagint closest_tag(const double *x)
+  {
+    int c[3];
+    cell(x, c);
+    tagint found = 0;
+    std::vector<long long> seen;
+    for (int i = -1; i <= 1; i++)
+      for (int j = -1; j <= 1; j++)
+        for (int k = -1; k <= 1; k++) {
+          int n[3] = {c[0] + i, c[1] + j, c[2] + k};
+          for (int m = 0; m < 3; m++)
+            if (wrap[m]) n[m] = ((n[m] % ncell[m]) + ncell[m]) % ncell[m];
+          const long long kk = key(n);
+          if (std::find(seen.begin(), seen.end(), kk) != seen.end()) continue;
+          seen.push_back(kk);
+          auto it = cells.find(kk);
+          if (it == cells.end()) continue;
+          for (const auto &e : it->second) {
+            double dx = x[0] - e.x[0], dy = x[1] - e.x[1], dz = x[2] - e.x[2];
+            domain->minimum_image(dx, dy, dz);
+            if (dx * dx + dy * dy + dz * dz < d * d && (found == 0 || e.tag < found)) found = e.tag;
+          }
+        }
+    return found;
+  }
+
+ private:
+  struct Entry {
+    double x[3];
+    tagint tag;
+  };
+  Domain *domain;
+  double d;
+  int wrap[3], ncell[3];
+  double size[3];
+  std::unordered_map<long long, std::vector<Entry>> cells;
+
+  void cell(const double *x, int *c) const
+  {
+    for (int k = 0; k < 3; k++) {
+      c[k] = static_cast<int>(std::floor((x[k] - domain->boxlo[k]) / size[k]));
+      if (wrap[k]) c[k] = std::min(std::max(c[k], 0), ncell[k] - 1);
+    }
+  }
+  static long long key(const int *c)
+  {
+    const long long off = 1 << 20, m = 1 << 21;
+    return ((c[0] + off) * m + (c[1] + off)) * m + (c[2] + off);
+  }
+};
+
+} // namespace
+
+/* parsed arguments of one create_peridem_grains command */
+struct CreatePeridemGrains::Options {
+  int type = 0;
+  std::string shape;                    // built-in 2D name, sphere/box/cylinder, file, gmsh
+  std::map<std::string, double> params; // shape parameters given
+  std::string file;                     // polygon file or mesh
+  std::string boundary;                 // polygon that prunes the bonds of a mesh
+  std::vector<std::array<double, 3>> at;
+  double spacing = 0.0, horizon = 0.0, density = 0.0, scale = 1.0, extrude = 0.0;
+  double overlap = 0.0;
+  double angle = 0.0;        // radians
+  long long rotate_seed = 0; // > 0: random rotation
+  int bond_type = 1;
+  peridem::NodalVolume volume = peridem::NodalVolume::CellArea;
+  peridem::Pruning pruning = peridem::Pruning::Seed;
+  std::vector<peridem::CutSegment> notches;
+  bool is_solid() const { return solid_shapes().count(shape) > 0; }
+};
+
+/* the discretized grain in its own frame (centred at its placement point) */
+struct CreatePeridemGrains::Grain {
+  std::vector<std::array<double, 3>> x;
+  std::vector<double> volume;
+  std::vector<peridem::Bond> bonds;
+};
+
+/* ---------------------------------------------------------------------- */
+
+CreatePeridemGrains::CreatePeridemGrains(LAMMPS *lmp) : Command(lmp) {}
+
+/* ---------------------------------------------------------------------- */
+
+void CreatePeridemGrains::command(int narg, char **arg)
+{
+  if (domain->box_exist == 0) error->all(FLERR, "{} command before simulation box is defined", CMD);
+  if (!atom->x0_flag || !atom->vfrac_flag || !atom->molecule_flag || !atom->rmass_flag ||
+      atom->molecular != Atom::MOLECULAR)
+    error->all(FLERR, "{} requires atom style peridem", CMD);
+  if (domain->triclinic) error->all(FLERR, "{} does not support triclinic boxes", CMD);
+
+  const double time0 = MPI_Wtime();
+  Options opt;
+  parse(narg, arg, opt);
+  check(opt);
+  Grain grain;
+  build(opt, grain);
+  check_bonds_per_atom(grain);
+  place(opt, grain);
+
+  if (comm->me == 0) utils::logmesg(lmp, "  {} CPU = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
+}
+
+/* ----------------------------------------------------------------------
+   create_peridem_grains type shape-style [shape args] keyword value ...
+------------------------------------------------------------------------- */
+
+void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
+{
+  if (narg < 2) error->all(FLERR, "Illegal {} command: expected atom type and shape", CMD);
+  o.type = utils::inumeric(FLERR, arg[0], false, lmp);
+  o.shape = arg[1];
+  int iarg = 2;
+
+  auto need = [&](int n, const char *what) {
+    if (iarg + n > narg)
+      error->all(FLERR, "Illegal {} command: {} needs {} value(s)", CMD, what, n);
+  };
+  auto positive = [&](const char *str, const char *what) {
+    const double v = utils::numeric(FLERR, str, false, lmp);
+    if (!(v > 0.0)) error->all(FLERR, "{}: {} must be > 0, got {}", CMD, what, str);
+    return v;
+  };
+
+  // shape arguments
+  const peridem::ShapeInfo *info = builtin_shape(o.shape);
+  if (info || o.is_solid()) {
+    while (iarg + 1 < narg) {
+      const std::string key = arg[iarg];
+      bool known =
+          info ? std::any_of(info->parameters.begin(), info->parameters.end(),
+                             [&](const peridem::ShapeParameter &p) { return p.name == key; })
+               : solid_shapes().at(o.shape).count(key) > 0;
+      if (!known) break;
+      o.params[key] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    }
+  } else if (o.shape == "file" || o.shape == "gmsh") {
+    need(1, o.shape.c_str());
+    o.file = arg[iarg++];
+  } else {
+    error->all(FLERR,
+               "{}: unknown shape '{}'; use one of {}, sphere, box, cylinder, file FILE or "
+               "gmsh FILE",
+               CMD, o.shape, peridem::builtinShapeList());
+  }
+
+  bool have_material = false;
+  peridem::Material material;
+  while (iarg < narg) {
+    const std::string key = arg[iarg++];
+    if (key == "at") {
+      need(3, "at");
+      o.at.push_back({utils::numeric(FLERR, arg[iarg], false, lmp),
+                      utils::numeric(FLERR, arg[iarg + 1], false, lmp),
+                      utils::numeric(FLERR, arg[iarg + 2], false, lmp)});
+      iarg += 3;
+    } else if (key == "positions") {
+      need(1, "positions");
+      for (const auto &p : read_positions(arg[iarg++])) o.at.push_back(p);
+    } else if (key == "spacing") {
+      need(1, "spacing");
+      o.spacing = positive(arg[iarg++], "spacing");
+    } else if (key == "horizon") {
+      need(1, "horizon");
+      o.horizon = positive(arg[iarg++], "horizon");
+    } else if (key == "density") {
+      need(1, "density");
+      o.density = positive(arg[iarg++], "density");
+    } else if (key == "material") {
+      need(2, "material");
+      material = PERIDEM::load_material(lmp, CMD, arg[iarg], arg[iarg + 1]);
+      have_material = true;
+      iarg += 2;
+    } else if (key == "bond/type") {
+      need(1, "bond/type");
+      o.bond_type = utils::inumeric(FLERR, arg[iarg++], false, lmp);
+    } else if (key == "rotate") {
+      need(1, "rotate");
+      if (strcmp(arg[iarg], "random") == 0) {
+        need(2, "rotate random");
+        o.rotate_seed = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+        if (o.rotate_seed <= 0) error->all(FLERR, "{}: rotate random seed must be > 0", CMD);
+        iarg += 2;
+      } else {
+        o.angle = utils::numeric(FLERR, arg[iarg++], false, lmp) * M_PI / 180.0;
+      }
+    } else if (key == "scale") {
+      need(1, "scale");
+      o.scale = positive(arg[iarg++], "scale");
+    } else if (key == "extrude") {
+      need(1, "extrude");
+      o.extrude = positive(arg[iarg++], "extrude height");
+    } else if (key == "volume") {
+      need(1, "volume");
+      const std::string v = arg[iarg++];
+      if (v == "cell")
+        o.volume = peridem::NodalVolume::CellArea;
+      else if (v == "exact")
+        o.volume = peridem::NodalVolume::ExactClip;
+      else
+        error->all(FLERR, "{}: unknown volume mode '{}' (use cell or exact)", CMD, v);
+    } else if (key == "pruning") {
+      need(1, "pruning");
+      const std::string v = arg[iarg++];
+      if (v == "seed")
+        o.pruning = peridem::Pruning::Seed;
+      else if (v == "exact")
+        o.pruning = peridem::Pruning::Exact;
+      else if (v == "off")
+        o.pruning = peridem::Pruning::None;
+      else
+        error->all(FLERR, "{}: unknown pruning '{}' (use seed, exact or off)", CMD, v);
+    } else if (key == "notch") {
+      need(4, "notch");
+      double v[4];
+      for (int k = 0; k < 4; k++) v[k] = utils::numeric(FLERR, arg[iarg + k], false, lmp);
+      o.notches.push_back({{v[0], v[1]}, {v[2], v[3]}});
+      iarg += 4;
+    } else if (key == "overlap") {
+      need(1, "overlap");
+      o.overlap = positive(arg[iarg++], "overlap distance");
+    } else if (key == "boundary") {
+      need(1, "boundary");
+      o.boundary = arg[iarg++];
+    } else {
+      error->all(FLERR, "{}: unknown keyword or shape parameter '{}'", CMD, key);
+    }
+  }
+
+  // the material gives what the command does not repeat
+  if (have_material) {
+    if (o.density == 0.0) o.density = material.density;
+    if (o.horizon == 0.0) o.horizon = material.horizon;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void CreatePeridemGrains::check(const Options &o)
+{
+  if (o.type <= 0 || o.type > atom->ntypes)
+    error->all(FLERR, "{}: invalid atom type {} (the box has {} atom types)", CMD, o.type,
+               atom->ntypes);
+  if (atom->nbondtypes == 0)
+    error->all(FLERR, "{}: the box has no bond types; set bond/types in create_box", CMD);
+  if (o.bond_type <= 0 || o.bond_type > atom->nbondtypes)
+    error->all(FLERR, "{}: invalid bond type {} (the box has {} bond types)", CMD, o.bond_type,
+               atom->nbondtypes);
+  if (o.at.empty()) error->all(FLERR, "{}: no grain position given (use at x y z)", CMD);
+  if (!(o.density > 0.0))
+    error->all(FLERR, "{}: no density: give density or material FILE NAME", CMD);
+  if (!(o.horizon > 0.0))
+    error->all(FLERR, "{}: no horizon: give horizon, or a material whose file sets it", CMD);
+  if (o.shape == "gmsh") {
+    if (o.spacing > 0.0) error->all(FLERR, "{}: gmsh grains take the spacing from the mesh", CMD);
+  } else if (!(o.spacing > 0.0)) {
+    error->all(FLERR, "{}: no node spacing given (use spacing h)", CMD);
+  }
+  if (!o.boundary.empty() && o.shape != "gmsh")
+    error->all(FLERR, "{}: boundary is only used with gmsh meshes", CMD);
+
+  const bool solid = o.is_solid() || o.extrude > 0.0;
+  if (domain->dimension == 2) {
+    if (solid)
+      error->all(FLERR, "{}: shape {} needs a 3D box", CMD, o.extrude > 0.0 ? "extrude" : o.shape);
+    for (const auto &p : o.at)
+      if (p[2] != 0.0) error->all(FLERR, "{}: a 2D grain needs z = 0 in at, got {}", CMD, p[2]);
+  } else {
+    if (!solid) error->all(FLERR, "{}: 2D shape {} in a 3D box needs extrude HEIGHT", CMD, o.shape);
+    if (o.shape == "gmsh") error->all(FLERR, "{}: gmsh meshes are 2D only", CMD);
+    if (o.volume == peridem::NodalVolume::ExactClip)
+      error->all(FLERR, "{}: volume exact is 2D only (3D nodes have volume h^3)", CMD);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   discretize the grain once, in its own frame (shape centre at the origin)
+------------------------------------------------------------------------- */
+
+void CreatePeridemGrains::build(const Options &o, Grain &g)
+{
+  try {
+    if (o.shape == "gmsh") {
+      peridem::Mesh2D mesh = peridem::readGmshMesh(o.file);
+      for (auto &v : mesh.vertices) v = v * o.scale;
+      peridem::Nodes2D nodes = peridem::meshNodes(mesh);
+      peridem::Vec2 c;
+      double area = 0.0;
+      for (std::size_t i = 0; i < nodes.size(); i++) {
+        c = c + nodes.x[i] * nodes.volume[i];
+        area += nodes.volume[i];
+      }
+      c = c / area;
+      for (auto &v : mesh.vertices) v = v - c;
+      peridem::Polygon boundary;
+      if (!o.boundary.empty()) {
+        boundary = peridem::readPolygonFile(o.boundary);
+        boundary.scale(o.scale).translate(c * -1.0);
+      }
+      const peridem::Grain2D grain =
+          peridem::meshGrain(mesh, o.horizon, o.boundary.empty() ? nullptr : &boundary, o.notches);
+      for (std::size_t i = 0; i < grain.nodes.size(); i++)
+        g.x.push_back({grain.nodes.x[i].x, grain.nodes.x[i].y, 0.0});
+      g.volume = grain.nodes.volume;
+      g.bonds = grain.bonds;
+      return;
+    }
+
+    if (o.is_solid()) {
+      std::map<std::string, double> p = solid_shapes().at(o.shape);
+      for (const auto &kv : o.params) p[kv.first] = kv.second * o.scale;
+      for (const auto &kv : p)
+        if (!(kv.second > 0.0))
+          throw peridem::GeometryError(o.shape + " " + kv.first + " must be > 0");
+      peridem::Shape3D s = o.shape == "sphere" ? peridem::Shape3D::sphere(p["radius"])
+                           : o.shape == "box"
+                               ? peridem::Shape3D::box(p["lx"], p["ly"], p["lz"])
+                               : peridem::Shape3D::cylinder(p["radius"], p["height"]);
+      const peridem::Grain3D grain = peridem::discretizeGrain3D(s, o.spacing, o.horizon, o.pruning);
+      for (const auto &v : grain.nodes.x) g.x.push_back({v.x, v.y, v.z});
+      g.volume = grain.nodes.volume;
+      g.bonds = grain.bonds;
+      return;
+    }
+
+    // polygon: built-in shapes are centred by construction, files by centroid
+    peridem::Polygon shape;
+    if (o.shape == "file") {
+      shape = peridem::readPolygonFile(o.file);
+      shape.translate(shape.centroid() * -1.0);
+    } else {
+      shape = peridem::makeShape(o.shape, o.params);
+    }
+    shape.scale(o.scale);
+
+    if (o.extrude > 0.0) {
+      const peridem::Shape3D s = peridem::Shape3D::extrusion(shape, o.extrude);
+      peridem::Grain3D grain = peridem::discretizeGrain3D(s, o.spacing, o.horizon, o.pruning);
+      std::vector<peridem::Vec2> xy;
+      for (const auto &v : grain.nodes.x) {
+        g.x.push_back({v.x, v.y, v.z});
+        xy.emplace_back(v.x, v.y);
+      }
+      peridem::removeBondsCrossing(grain.bonds, xy, o.notches);
+      g.volume = grain.nodes.volume;
+      g.bonds = grain.bonds;
+      return;
+    }
+
+    peridem::GrainOptions gopt;
+    gopt.lattice.volume = o.volume;
+    gopt.pruning = o.pruning;
+    gopt.cuts = o.notches;
+    const peridem::Grain2D grain = peridem::discretizeGrain(shape, o.spacing, o.horizon, gopt);
+    for (const auto &v : grain.nodes.x) g.x.push_back({v.x, v.y, 0.0});
+    g.volume = grain.nodes.volume;
+    g.bonds = grain.bonds;
+  } catch (peridem::GeometryError &e) {
+    error->all(FLERR, "{}: {}", CMD, e.what());
+  }
+}
+
+/* ----------------------------------------------------------------------
+   every grain has the same bonds: check the per-atom bond capacity once
+------------------------------------------------------------------------- */
+
+void CreatePeridemGrains::check_bonds_per_atom(const Grain &g)
+{
+  std::vector<int> count(g.x.size(), 0);
+  for (const auto &b : g.bonds) {
+    count[b.first]++; // stored on the atom with the smaller ID
+    if (!force->newton_bond) count[b.second]++;
+  }
+  const int most = count.empty() ? 0 : *std::max_element(count.begin(), count.end());
+  if (most > atom->bond_per_atom)
+    error->all(FLERR,
+               "{}: a grain node needs {} bonds but atoms can hold {}; set extra/bond/per/atom "
+               "to at least {} in create_box or read_data",
+               CMD, most, atom->bond_per_atom, most);
+}
+
+/* ----------------------------------------------------------------------
+   one grain per position: nodes inside my subdomain become my atoms,
+   with atom IDs tag0 + node index so bonds attach by ID on any rank
+------------------------------------------------------------------------- */
+
+void CreatePeridemGrains::place(const Options &o, const Grain &g)
+{
+  const int nlocal_previous = atom->nlocal;
+  const bigint natoms_previous = atom->natoms;
+  const int n = static_cast<int>(g.x.size());
+  const bigint ngrains = static_cast<bigint>(o.at.size());
+  if (natoms_previous + ngrains * n >= MAXTAGINT)
+    error->all(FLERR, "{}: too many atoms for 32-bit atom IDs", CMD);
+
+  tagint maxtag = 0, maxmol = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    maxtag = std::max(maxtag, atom->tag[i]);
+    maxmol = std::max(maxmol, atom->molecule[i]);
+  }
+  tagint tag0, mol;
+  MPI_Allreduce(&maxtag, &tag0, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  MPI_Allreduce(&maxmol, &mol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  tag0 += 1;
+  mol += 1;
+  const tagint first_mol = mol;
+
+  OverlapGrid *grid = nullptr;
+  if (o.overlap > 0.0) {
+    grid = new OverlapGrid(domain, o.overlap);
+    for (int i = 0; i < atom->nlocal; i++) {
+      double xi[3] = {atom->x[i][0], atom->x[i][1], atom->x[i][2]};
+      domain->remap(xi);
+      grid->insert(xi, atom->tag[i]);
+    }
+  }
+
+  const double *lo = domain->sublo, *hi = domain->subhi;
+  const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  auto mine = [&](const double *x) {
+    for (int k = 0; k < 3; k++) {
+      if (x[k] < lo[k]) return false;
+      if (x[k] >= hi[k] && !(x[k] == hi[k] && hi[k] == domain->boxhi[k] && !periodic[k]))
+        return false;
+    }
+    return true;
+  };
+
+  std::mt19937_64 gen(static_cast<std::uint64_t>(o.rotate_seed));
+  std::vector<std::array<double, 3>> X(n);
+  std::vector<int> local(n);
+  for (bigint ig = 0; ig < ngrains; ig++) {
+    Rotation R = Rotation::about_z(o.angle);
+    if (o.rotate_seed > 0) {
+      const double u1 = uniform(gen), u2 = uniform(gen), u3 = uniform(gen);
+      R = domain->dimension == 2 ? Rotation::about_z(2 * M_PI * u1)
+                                 : Rotation::random3d(u1, u2, u3);
+    }
+    const auto &c = o.at[ig];
+    for (int k = 0; k < n; k++)
+      for (int d = 0; d < 3; d++)
+        X[k][d] = c[d] + R.m[d][0] * g.x[k][0] + R.m[d][1] * g.x[k][1] + R.m[d][2] * g.x[k][2];
+
+    if (grid) {
+      tagint hit = MAXTAGINT, all_hit;
+      int node = -1;
+      for (int k = 0; k < n && hit == MAXTAGINT; k++) {
+        double xk[3] = {X[k][0], X[k][1], X[k][2]};
+        domain->remap(xk);
+        const tagint t = grid->closest_tag(xk);
+        if (t) {
+          hit = t;
+          node = k;
+        }
+      }
+      MPI_Allreduce(&hit, &all_hit, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+      if (all_hit != MAXTAGINT) {
+        int all_node;
+        if (hit != all_hit) node = n;
+        MPI_Allreduce(&node, &all_node, 1, MPI_INT, MPI_MIN, world);
+        error->all(FLERR,
+                   "{}: grain {} at ({}, {}, {}) overlaps existing atoms: its node at ({:.6g}, "
+                   "{:.6g}, {:.6g}) is closer than the overlap distance {} to atom {}",
+                   CMD, ig + 1, c[0], c[1], c[2], X[all_node][0], X[all_node][1], X[all_node][2],
+                   o.overlap, all_hit);
+      }
+    }
+
+    for (int k = 0; k < n; k++) {
+      double xk[3] = {X[k][0], X[k][1], X[k][2]};
+      imageint image = ((imageint)IMGMAX << IMG2BITS) | ((imageint)IMGMAX << IMGBITS) | IMGMAX;
+      domain->remap(xk, image);
+      local[k] = -1;
+      if (!mine(xk)) continue;
+      atom->avec->create_atom(o.type, xk);
+      const int i = atom->nlocal - 1;
+      local[k] = i;
+      atom->tag[i] = tag0 + k;
+      atom->image[i] = image;
+      atom->molecule[i] = mol;
+      atom->vfrac[i] = g.volume[k];
+      atom->rmass[i] = o.density * g.volume[k];
+      for (int d = 0; d < 3; d++) atom->x0[i][d] = X[k][d]; // unwrapped reference
+      if (grid) grid->insert(xk, atom->tag[i]);
+    }
+
+    for (const auto &b : g.bonds) {
+      const int ends[2][2] = {{b.first, b.second}, {b.second, b.first}};
+      for (int e = 0; e < (force->newton_bond ? 1 : 2); e++) {
+        const int i = local[ends[e][0]];
+        if (i < 0) continue;
+        const int m = atom->num_bond[i]++;
+        atom->bond_type[i][m] = o.bond_type;
+        atom->bond_atom[i][m] = tag0 + ends[e][1];
+      }
+    }
+    tag0 += n;
+    mol++;
+  }
+  delete grid;
+
+  // every node must have found an owner
+  bigint nblocal = atom->nlocal;
+  MPI_Allreduce(&nblocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  const bigint expected = natoms_previous + ngrains * n;
+  if (atom->natoms != expected)
+    error->all(FLERR, "{}: {} of {} grain nodes are outside the simulation box", CMD,
+               expected - atom->natoms, ngrains * n);
+
+  atom->data_fix_compute_variable(nlocal_previous, atom->nlocal);
+  atom->tag_check();
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  const bigint nbonds_previous = atom->nbonds;
+  const bigint nbonds = PERIDEM::finish_bond_edit(lmp);
+
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "Created {} peridem grains (IDs {} to {}) of {} nodes and {} bonds each: {} "
+                   "atoms, {} bonds added\n",
+                   ngrains, first_mol, mol - 1, n, g.bonds.size(), atom->natoms - natoms_previous,
+                   nbonds - nbonds_previous);
+}
+
+/* ----------------------------------------------------------------------
+   positions file: one "x y z" per line, '#' starts a comment
+------------------------------------------------------------------------- */
+
+std::vector<std::array<double, 3>> CreatePeridemGrains::read_positions(const char *file)
+{
+  std::ifstream in(file);
+  if (!in) error->all(FLERR, "{}: cannot open positions file {}", CMD, file);
+  std::vector<std::array<double, 3>> out;
+  std::string line;
+  for (int lineno = 1; std::getline(in, line); lineno++) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream s(line);
+    std::array<double, 3> p;
+    if (!(s >> p[0])) continue;
+    std::string rest;
+    if (!(s >> p[1] >> p[2]) || (s >> rest))
+      error->all(FLERR, "{}: positions file {}:{}: expected 'x y z'", CMD, file, lineno);
+    out.push_back(p);
+  }
+  return out;
+}

@@ -1,0 +1,524 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: fix peridem/wall, rigid analytic container walls.
+
+   The node-wall force (repulsion by inclusion-exclusion over walls, edges
+   and corners, damping and friction wall by wall) is
+   peridem::wall_contact_force(); this file only moves the walls, feeds
+   the nodes through it and sums the reactions.
+------------------------------------------------------------------------- */
+
+#include "fix_peridem_wall.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "input.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+const char *const STYLE = "fix peridem/wall";
+const char *const FACES[peridem::kMaxWalls] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+enum { ENERGY = 3 * peridem::kMaxWalls, NLOST, DISSIPATED };
+
+// +1 for a hi wall (its outward normal is +axis), -1 for a lo wall
+inline double outward(int w)
+{
+  return (w % 2 == 0) ? -1.0 : 1.0;
+}
+} // namespace
+
+/* ----------------------------------------------------------------------
+   fix ID group peridem/wall face pos [face pos ...] keyword values ...
+     face = xlo xhi ylo yhi zlo zhi;  pos = number | EDGE | v_name
+     velocity face v | servo face P gain vmax | shear face vx vy vz |
+     lost error|warn | contact keywords (lmp_peridem_contact.h)
+------------------------------------------------------------------------- */
+
+FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), nwalls(2 * domain->dimension), lost_error(1), servo_any(0), var_any(0),
+      in_setup(0), reduced(0), dissipated_local(0.0), lost_local(0)
+{
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = PER_WALL * nwalls + 2;
+  global_freq = 1;
+  extscalar = 1;
+  extvector = -1;
+  extlist = new int[size_vector];
+  for (int w = 0; w < nwalls; w++) {
+    const int e[PER_WALL] = {0, 0, 1, 1, 1, 1}; // position, velocity intensive
+    for (int j = 0; j < PER_WALL; j++) extlist[PER_WALL * w + j] = e[j];
+  }
+  extlist[PER_WALL * nwalls] = 0;
+  extlist[PER_WALL * nwalls + 1] = 1;
+  energy_global_flag = 1;
+  virial_global_flag = virial_peratom_flag = 1;
+  restart_global = 1;
+  dynamic_group_allow = 1;
+  for (double &v : local) v = 0.0;
+  for (double &v : total) v = 0.0;
+
+  if (!atom->vfrac_flag || !atom->rmass_flag)
+    error->all(FLERR, "{} needs per-atom volumes and masses (atom_style peridem)", STYLE);
+
+  PERIDEM::ContactParser parser(lmp, STYLE);
+  int iarg = 3;
+  auto need = [&](int n, const char *what) {
+    if (iarg + n >= narg) error->all(FLERR, "{}: {} needs {} value(s)", STYLE, what, n);
+  };
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    const int face = face_index(key);
+    if (face >= 0) {
+      need(1, arg[iarg]);
+      if (face >= nwalls)
+        error->all(FLERR, "{}: wall {} needs a 3D simulation (dimension 3)", STYLE, key);
+      Wall &wall = walls[face];
+      if (wall.active) error->all(FLERR, "{}: wall {} is given twice", STYLE, key);
+      wall.active = true;
+      const char *value = arg[iarg + 1];
+      if (strcmp(value, "EDGE") == 0) {
+        wall.pos = (face % 2 == 0) ? domain->boxlo[face / 2] : domain->boxhi[face / 2];
+      } else if (utils::strmatch(value, "^v_")) {
+        wall.var = value + 2;
+        wall.motion = Motion::Variable;
+        var_any = 1;
+      } else {
+        wall.pos = utils::numeric(FLERR, value, false, lmp);
+      }
+      iarg += 2;
+    } else if (key == "velocity") {
+      need(2, "velocity");
+      const int w = parse_face(arg[iarg + 1]);
+      walls[w].vel = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (walls[w].motion != Motion::Fixed)
+        error->all(FLERR, "{}: wall {} has a variable position or a servo and a velocity", STYLE,
+                   FACES[w]);
+      walls[w].motion = Motion::Velocity;
+      iarg += 3;
+    } else if (key == "servo") {
+      need(4, "servo");
+      const int w = parse_face(arg[iarg + 1]);
+      Wall &wall = walls[w];
+      if (wall.motion != Motion::Fixed)
+        error->all(FLERR, "{}: wall {} has a variable position or a velocity and a servo", STYLE,
+                   FACES[w]);
+      wall.motion = Motion::Servo;
+      wall.pressure = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      wall.gain = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      wall.vmax = utils::numeric(FLERR, arg[iarg + 4], false, lmp);
+      if (!(wall.pressure >= 0.0))
+        error->all(FLERR, "{}: servo pressure must be >= 0, not {}", STYLE, arg[iarg + 2]);
+      if (!(wall.gain > 0.0))
+        error->all(FLERR, "{}: servo gain must be > 0, not {}", STYLE, arg[iarg + 3]);
+      if (!(wall.vmax > 0.0))
+        error->all(FLERR, "{}: servo vmax must be > 0, not {}", STYLE, arg[iarg + 4]);
+      servo_any = 1;
+      iarg += 5;
+    } else if (key == "shear") {
+      need(4, "shear");
+      const int w = parse_face(arg[iarg + 1]);
+      for (int k = 0; k < 3; k++)
+        walls[w].shear[k] = utils::numeric(FLERR, arg[iarg + 2 + k], false, lmp);
+      if (walls[w].shear[w / 2] != 0.0)
+        error->all(FLERR,
+                   "{}: shear velocity of wall {} must lie in the wall (its {} component must be "
+                   "0; use velocity or servo for normal motion)",
+                   STYLE, FACES[w], "xyz"[w / 2]);
+      if (domain->dimension == 2 && walls[w].shear[2] != 0.0)
+        error->all(FLERR, "{}: shear velocity of wall {} has a z component in 2D", STYLE, FACES[w]);
+      iarg += 5;
+    } else if (key == "lost") {
+      need(1, "lost");
+      const std::string v = arg[iarg + 1];
+      if (v == "error")
+        lost_error = 1;
+      else if (v == "warn")
+        lost_error = 0;
+      else
+        error->all(FLERR, "{}: lost must be error or warn, not {}", STYLE, v);
+      iarg += 2;
+    } else {
+      const int used = parser.consume(narg, arg, iarg);
+      if (used == 0)
+        error->all(FLERR, "{}: unknown wall or keyword {} (walls: xlo xhi ylo yhi{})", STYLE, key,
+                   domain->dimension == 3 ? " zlo zhi" : "");
+      iarg += used;
+    }
+  }
+
+  int nactive = 0;
+  for (int w = 0; w < nwalls; w++) {
+    if (walls[w].active) nactive++;
+    if (!walls[w].active && (walls[w].motion != Motion::Fixed || walls[w].shear[0] != 0.0 ||
+                             walls[w].shear[1] != 0.0 || walls[w].shear[2] != 0.0))
+      error->all(FLERR, "{}: wall {} moves but is not defined (add '{} position')", STYLE, FACES[w],
+                 FACES[w]);
+  }
+  if (nactive == 0) error->all(FLERR, "{}: no wall given (xlo xhi ylo yhi zlo zhi)", STYLE);
+  contact = parser.finish(domain->dimension);
+  check_order("as given");
+
+  if (comm->me == 0)
+    utils::logmesg(lmp, "{} {}: {}\n", STYLE, id, PERIDEM::describe_contact(contact));
+}
+
+FixPeridemWall::~FixPeridemWall()
+{
+  delete[] extlist;
+}
+
+int FixPeridemWall::setmask()
+{
+  return POST_INTEGRATE | POST_FORCE | POST_RUN | MIN_POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixPeridemWall::face_index(const std::string &name)
+{
+  for (int w = 0; w < peridem::kMaxWalls; w++)
+    if (name == FACES[w]) return w;
+  return -1;
+}
+
+int FixPeridemWall::parse_face(const char *word) const
+{
+  const int w = face_index(word);
+  if (w < 0 || w >= nwalls)
+    error->all(FLERR, "{}: unknown wall {} (walls: xlo xhi ylo yhi{})", STYLE, word,
+               domain->dimension == 3 ? " zlo zhi" : "");
+  return w;
+}
+
+/* ----------------------------------------------------------------------
+   a wall must stay below (lo) or above (hi) its opposite wall
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::check_order(const char *when) const
+{
+  for (int k = 0; k < nwalls / 2; k++) {
+    const Wall &lo = walls[2 * k], &hi = walls[2 * k + 1];
+    if (!lo.active || !hi.active) continue;
+    if (lo.motion == Motion::Variable && lo.var_step < 0) continue; // not evaluated yet
+    if (hi.motion == Motion::Variable && hi.var_step < 0) continue;
+    if (!(lo.pos < hi.pos))
+      error->all(FLERR, "{}: wall {} at {} is not below wall {} at {} ({})", STYLE, FACES[2 * k],
+                 lo.pos, FACES[2 * k + 1], hi.pos, when);
+  }
+}
+
+void FixPeridemWall::init()
+{
+  for (int w = 0; w < nwalls; w++) {
+    Wall &wall = walls[w];
+    if (wall.motion != Motion::Variable) continue;
+    wall.ivar = input->variable->find(wall.var.c_str());
+    if (wall.ivar < 0)
+      error->all(FLERR, "{}: variable {} for wall {} does not exist", STYLE, wall.var, FACES[w]);
+    if (!input->variable->equalstyle(wall.ivar))
+      error->all(FLERR, "{}: variable {} for wall {} is not equal-style", STYLE, wall.var,
+                 FACES[w]);
+  }
+}
+
+void FixPeridemWall::setup(int vflag)
+{
+  lost_local = 0;
+  in_setup = 1;
+  post_force(vflag);
+  in_setup = 0;
+}
+
+void FixPeridemWall::min_setup(int vflag)
+{
+  in_setup = 1;
+  post_force(vflag);
+  in_setup = 0;
+}
+
+void FixPeridemWall::min_post_force(int vflag)
+{
+  in_setup = 1; // no dissipation bookkeeping, walls do not move
+  post_force(vflag);
+  in_setup = 0;
+}
+
+/* ----------------------------------------------------------------------
+   walls with a velocity (given or from the servo) move with the nodes
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::post_integrate()
+{
+  const double dt = update->dt;
+  for (int w = 0; w < nwalls; w++) {
+    Wall &wall = walls[w];
+    if (wall.motion == Motion::Velocity || wall.motion == Motion::Servo) wall.pos += wall.vel * dt;
+  }
+  check_order("after a step");
+}
+
+/* ----------------------------------------------------------------------
+   variable walls: position at this step; velocity = backward difference
+   over the steps since the last evaluation (0 at the first evaluation)
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::update_variable_walls()
+{
+  if (!var_any) return;
+  modify->clearstep_compute();
+  const bigint step = update->ntimestep;
+  for (int w = 0; w < nwalls; w++) {
+    Wall &wall = walls[w];
+    if (wall.motion != Motion::Variable || wall.var_step == step) continue;
+    const double pos = input->variable->compute_equal(wall.ivar);
+    wall.vel = wall.var_step < 0 ? 0.0 : (pos - wall.pos) / ((step - wall.var_step) * update->dt);
+    wall.pos = pos;
+    wall.var_step = step;
+  }
+  modify->addstep_compute(step + 1);
+  check_order("from its variable");
+}
+
+peridem::WallBox FixPeridemWall::make_box() const
+{
+  peridem::WallBox box;
+  box.dimension = domain->dimension;
+  for (int w = 0; w < nwalls; w++) {
+    box.active[w] = walls[w].active;
+    (w % 2 == 0 ? box.lo : box.hi)[w / 2] = walls[w].pos;
+  }
+  return box;
+}
+
+/* ----------------------------------------------------------------------
+   length (2D) or area (3D) of wall w: the extent of the container along
+   the other axes, between their walls or the simulation box edges
+------------------------------------------------------------------------- */
+
+double FixPeridemWall::wall_area(int w) const
+{
+  double area = 1.0;
+  for (int k = 0; k < domain->dimension; k++) {
+    if (k == w / 2) continue;
+    const double lo = walls[2 * k].active ? walls[2 * k].pos : domain->boxlo[k];
+    const double hi = walls[2 * k + 1].active ? walls[2 * k + 1].pos : domain->boxhi[k];
+    area *= hi - lo;
+  }
+  return area;
+}
+
+/* ----------------------------------------------------------------------
+   node-wall forces on the owned nodes of the group
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::post_force(int vflag)
+{
+  v_init(vflag);
+  update_variable_walls();
+  const peridem::WallBox box = make_box();
+  const peridem::ContactParams &params = contact.params;
+  const double Rc = params.Rc;
+
+  peridem::WallContactInput in;
+  for (int w = 0; w < nwalls; w++) {
+    for (int k = 0; k < 3; k++) in.wall_velocity[w][k] = walls[w].shear[k];
+    in.wall_velocity[w][w / 2] = walls[w].vel;
+  }
+  in.dt = update->dt;
+
+  for (int m = 0; m < ENERGY + 2; m++) local[m] = 0.0;
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const double *vfrac = atom->vfrac;
+  const double *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  double power = 0.0;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    int wmin = -1;
+    double dmin = Rc;
+    for (int w = 0; w < nwalls; w++) {
+      if (!box.active[w]) continue;
+      const double d = peridem::wall_distance(box, w, x[i]);
+      if (d < dmin) {
+        dmin = d;
+        wmin = w;
+      }
+    }
+    if (wmin < 0) continue; // no wall within Rc
+    if (dmin <= -Rc) {
+      // the whole contact disk/ball lies beyond the wall: no force can bring it back
+      if (lost_error)
+        error->one(FLERR,
+                   "{}: atom {} is {} beyond wall {} (more than Rc = {}): it crossed the wall "
+                   "and feels no wall force. Use a smaller time step, a stiffer contact, or "
+                   "'lost warn' to count such nodes instead",
+                   STYLE, atom->tag[i], -dmin, FACES[wmin], Rc);
+      local[NLOST] += 1.0;
+      lost_local++;
+      continue;
+    }
+    for (int k = 0; k < 3; k++) {
+      in.x[k] = x[i][k];
+      in.v[k] = v[i][k];
+    }
+    in.vol = vfrac[i];
+    in.mass = rmass[i];
+    const peridem::WallContactResult res = peridem::wall_contact_force(box, in, params);
+    for (int k = 0; k < 3; k++) f[i][k] += res.f[k];
+    local[ENERGY] += res.energy;
+    power += res.power;
+    for (int w = 0; w < nwalls; w++)
+      for (int k = 0; k < 3; k++) local[3 * w + k] += res.f_wall[w][k];
+
+    if (vflag_either) {
+      // each wall acts as a partner on its plane: virial del (x) f, del from the plane to the
+      // node along the wall's axis, f the force of that wall on the node (-reaction)
+      double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      for (int w = 0; w < nwalls; w++) {
+        const double *fw = res.f_wall[w];
+        if (fw[0] == 0.0 && fw[1] == 0.0 && fw[2] == 0.0) continue;
+        const int k = w / 2;
+        const double del = x[i][k] - walls[w].pos;
+        vir[k] -= del * fw[k];
+        if (k == 0) {
+          vir[3] -= del * fw[1];
+          vir[4] -= del * fw[2];
+        } else if (k == 1) {
+          vir[3] -= del * fw[0];
+          vir[5] -= del * fw[2];
+        } else {
+          vir[4] -= del * fw[0];
+          vir[5] -= del * fw[1];
+        }
+      }
+      v_tally(i, vir);
+    }
+  }
+  if (!in_setup) dissipated_local -= power * update->dt;
+  local[DISSIPATED] = dissipated_local;
+  reduced = 0;
+  if (servo_any) servo_control();
+}
+
+void FixPeridemWall::reduce()
+{
+  if (reduced) return;
+  MPI_Allreduce(local, total, NSUM, MPI_DOUBLE, MPI_SUM, world);
+  reduced = 1;
+}
+
+/* ----------------------------------------------------------------------
+   servo: the wall moves outward at
+     v_out = clamp(gain (N/A - P), -vmax, vmax)
+   N the normal load the nodes put on the wall (this step), A its length
+   (2D) or area (3D), P the target pressure. Against a bed of stiffness
+   k_eff (force per displacement) the load relaxes as exp(-t/tau) with
+   tau = A/(gain k_eff): stable for any gain with dt < 2 tau, without
+   overshoot while tau is long against the bed's own response time.
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::servo_control()
+{
+  reduce();
+  for (int w = 0; w < nwalls; w++) {
+    Wall &wall = walls[w];
+    if (wall.motion != Motion::Servo) continue;
+    const double load = outward(w) * total[3 * w + w / 2];
+    const double v_out = std::max(
+        -wall.vmax, std::min(wall.vmax, wall.gain * (load / wall_area(w) - wall.pressure)));
+    wall.vel = outward(w) * v_out;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPeridemWall::post_run()
+{
+  if (lost_error) return;
+  bigint all = 0;
+  MPI_Allreduce(&lost_local, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "{} {}: {} node-steps with a node completely beyond a wall in the last run "
+                   "(those nodes felt no wall force)",
+                   STYLE, id, all);
+  lost_local = 0;
+}
+
+double FixPeridemWall::compute_scalar()
+{
+  reduce();
+  return total[ENERGY];
+}
+
+double FixPeridemWall::compute_vector(int n)
+{
+  if (n < PER_WALL * nwalls) {
+    const int w = n / PER_WALL, j = n % PER_WALL;
+    if (j == 0) return walls[w].pos;
+    if (j == 1) return walls[w].vel;
+    reduce();
+    if (j == 2) return outward(w) * total[3 * w + w / 2];
+    return total[3 * w + (j - 3)];
+  }
+  reduce();
+  return n == PER_WALL * nwalls ? total[NLOST] : total[DISSIPATED];
+}
+
+/* ----------------------------------------------------------------------
+   restart: wall positions and velocities (moving and servo walls), the
+   dissipated energy
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::write_restart(FILE *fp)
+{
+  double sum = 0.0;
+  MPI_Allreduce(&dissipated_local, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return;
+  double list[2 * peridem::kMaxWalls + 2];
+  int n = 0;
+  list[n++] = nwalls;
+  for (int w = 0; w < nwalls; w++) {
+    list[n++] = walls[w].pos;
+    list[n++] = walls[w].vel;
+  }
+  list[n++] = sum;
+  const int size = n * sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(double), n, fp);
+}
+
+void FixPeridemWall::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  if (static_cast<int>(list[0]) != nwalls) {
+    if (comm->me == 0)
+      error->warning(FLERR, "{} {}: restart has {} walls, not {}: wall state not restored", STYLE,
+                     id, static_cast<int>(list[0]), nwalls);
+    return;
+  }
+  for (int w = 0; w < nwalls; w++) {
+    Wall &wall = walls[w];
+    if (wall.motion == Motion::Velocity || wall.motion == Motion::Servo) {
+      wall.pos = list[1 + 2 * w];
+      if (wall.motion == Motion::Servo) wall.vel = list[2 + 2 * w];
+    }
+  }
+  dissipated_local = comm->me == 0 ? list[1 + 2 * nwalls] : 0.0;
+  check_order("from the restart file");
+}

@@ -1,0 +1,89 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: fix peridem/wall, rigid analytic container walls.
+
+   An axis-aligned rectangle (2D) or box (3D) of flat walls that push the
+   peridynamic nodes of the group through the grain-shape seed's wall
+   contact (§4.5, eq. 4.7-4.8; formulas in peridem_wall_geometry.h, which
+   this fix calls). Walls may be fixed, move at a constant velocity, follow
+   an equal-style variable, or hold a pressure (servo); they may slide
+   along themselves (shear). See doc/fix_peridem_wall.rst.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(peridem/wall,FixPeridemWall);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_PERIDEM_WALL_H
+#define LMP_FIX_PERIDEM_WALL_H
+
+#include "fix.h"
+#include "lmp_peridem_contact.h"
+#include "peridem_wall_geometry.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class FixPeridemWall : public Fix {
+ public:
+  FixPeridemWall(class LAMMPS *, int, char **);
+  ~FixPeridemWall() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void min_setup(int) override;
+  void post_integrate() override;
+  void post_force(int) override;
+  void min_post_force(int) override;
+  void post_run() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // entries of the global vector per wall, then the totals (0-based)
+  static constexpr int PER_WALL = 6; // position, velocity, normal load, fx, fy, fz
+
+ private:
+  enum class Motion { Fixed, Velocity, Variable, Servo };
+  struct Wall {
+    bool active = false;
+    Motion motion = Motion::Fixed;
+    double pos = 0.0;            // coordinate of the wall plane
+    double vel = 0.0;            // velocity along the axis (+x, +y or +z)
+    double shear[3] = {0, 0, 0}; // tangential velocity (enters friction, damping)
+    std::string var;             // equal-style variable of the position
+    int ivar = -1;
+    bigint var_step = -1;                          // step of the last variable evaluation
+    double pressure = 0.0, gain = 0.0, vmax = 0.0; // servo
+  };
+  Wall walls[peridem::kMaxWalls];
+  int nwalls; // 2 * dimension
+  PERIDEM::ContactSpec contact;
+  int lost_error; // 1: a node beyond a wall ends the run, 0: counted and warned
+  int servo_any, var_any;
+  int in_setup;
+
+  // this rank's sums of the latest force evaluation, then the totals
+  enum { NSUM = 3 * peridem::kMaxWalls + 3 }; // reactions, energy, nodes lost, dissipated
+  double local[NSUM], total[NSUM];
+  int reduced;
+  double dissipated_local; // energy dissipated by this rank's nodes since the start
+  bigint lost_local;       // node-steps beyond a wall on this rank during this run
+
+  static int face_index(const std::string &name);
+  int parse_face(const char *word) const;
+  peridem::WallBox make_box() const;
+  double wall_area(int w) const;
+  void check_order(const char *when) const;
+  void update_variable_walls();
+  void reduce();
+  void servo_control();
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,238 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: contact keywords seen from LAMMPS commands.
+
+   Choices (documented in doc/fix_peridem_wall.rst, "Contact keywords"):
+   - bulk modulus k of a material: its K if the file gives it; a material
+     given by E alone takes the bond-based Poisson ratio of the dimension
+     (1/4 in 3D, 1/3 in 2D, grain-shape seed Remark 1), k = E/(3(1-2 nu)).
+   - Rc larger than the horizon: a warning, not an error. The seeds keep
+     R_c < eps (R_c = 0.95 h or eps/5), but nothing in the law breaks when
+     R_c > eps: the contact zone is just thicker than the bond family (a
+     calibrated Kn, or a thick wall layer, may want that). An error would
+     forbid those; a warning still flags a typo such as Rc 0.5 for 0.5e-3.
+------------------------------------------------------------------------- */
+
+#include "lmp_peridem_contact.h"
+
+#include "comm.h"
+#include "error.h"
+#include "lammps.h"
+#include "utils.h"
+
+#include "lmp_peridem_material.h"
+
+#include <cmath>
+#include <utility>
+
+using namespace LAMMPS_NS;
+
+namespace PERIDEM {
+
+ContactParser::ContactParser(LAMMPS *lmp_in, std::string command_in)
+    : lmp(lmp_in), command(std::move(command_in))
+{
+}
+
+double ContactParser::number(int narg, char **arg, int iarg, const char *what) const
+{
+  if (iarg >= narg) lmp->error->all(FLERR, "{}: keyword {} needs a value", command, what);
+  return utils::numeric(FLERR, arg[iarg], false, lmp);
+}
+
+double ContactParser::positive(int narg, char **arg, int iarg, const char *what) const
+{
+  const double v = number(narg, arg, iarg, what);
+  if (!(v > 0.0)) lmp->error->all(FLERR, "{}: {} must be > 0, not {}", command, what, arg[iarg]);
+  return v;
+}
+
+/* ----------------------------------------------------------------------
+   one keyword with its values; 0 if the word is not a contact keyword
+------------------------------------------------------------------------- */
+
+int ContactParser::consume(int narg, char **arg, int iarg)
+{
+  const std::string key = arg[iarg];
+  peridem::ContactParams &p = spec.params;
+  if (key == "material") {
+    if (iarg + 2 >= narg)
+      lmp->error->all(FLERR, "{}: material needs a file name and a material name", command);
+    const peridem::Material m = load_material(lmp, command, arg[iarg + 1], arg[iarg + 2]);
+    have_material = true;
+    material_k = m.elastic.K;
+    material_E = m.elastic.E;
+    material_horizon = m.horizon;
+    spec.density = m.density;
+    spec.origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
+    return 3;
+  }
+  if (key == "Kn") {
+    p.Kn = positive(narg, arg, iarg + 1, "Kn");
+    have_kn = true;
+    return 2;
+  }
+  if (key == "horizon") {
+    horizon = positive(narg, arg, iarg + 1, "horizon");
+    return 2;
+  }
+  if (key == "Rc") {
+    p.Rc = positive(narg, arg, iarg + 1, "Rc (contact radius)");
+    have_rc = true;
+    return 2;
+  }
+  if (key == "Rc_factor") {
+    rc_factor = positive(narg, arg, iarg + 1, "Rc_factor (Rc = Rc_factor * spacing)");
+    have_factor = true;
+    return 2;
+  }
+  if (key == "spacing") {
+    spacing = positive(narg, arg, iarg + 1, "spacing");
+    return 2;
+  }
+  if (key == "damping") {
+    if (iarg + 1 >= narg)
+      lmp->error->all(FLERR, "{}: damping needs none, nodal r_d or restitution eps_n C", command);
+    const std::string mode = arg[iarg + 1];
+    if (mode == "none") {
+      p.damping = peridem::ContactDamping::None;
+      return 2;
+    }
+    if (mode == "nodal") {
+      p.damping = peridem::ContactDamping::Nodal;
+      p.r_d = number(narg, arg, iarg + 2, "damping nodal");
+      if (!(p.r_d >= 0.0 && p.r_d <= 1.0))
+        lmp->error->all(FLERR, "{}: damping ratio r_d must lie in [0, 1], not {}", command,
+                        arg[iarg + 2]);
+      return 3;
+    }
+    if (mode == "restitution") {
+      p.damping = peridem::ContactDamping::Restitution;
+      p.eps_n = number(narg, arg, iarg + 2, "damping restitution");
+      p.C = number(narg, arg, iarg + 3, "damping restitution (C)");
+      if (!(p.eps_n > 0.0 && p.eps_n <= 1.0))
+        lmp->error->all(FLERR, "{}: restitution eps_n must lie in (0, 1], not {}", command,
+                        arg[iarg + 2]);
+      if (!(p.C > 0.0))
+        lmp->error->all(FLERR, "{}: restitution constant C must be > 0, not {}", command,
+                        arg[iarg + 3]);
+      return 4;
+    }
+    lmp->error->all(FLERR, "{}: damping must be none, nodal or restitution, not {}", command, mode);
+  }
+  if (key == "friction") {
+    if (iarg + 1 >= narg)
+      lmp->error->all(FLERR, "{}: friction needs none, regularized mu or coulomb mu", command);
+    const std::string mode = arg[iarg + 1];
+    if (mode == "none") {
+      p.friction = peridem::ContactFriction::None;
+      p.mu = 0.0;
+      return 2;
+    }
+    if (mode != "regularized" && mode != "coulomb")
+      lmp->error->all(FLERR, "{}: friction must be none, regularized or coulomb, not {}", command,
+                      mode);
+    p.friction = mode == "coulomb" ? peridem::ContactFriction::Coulomb
+                                   : peridem::ContactFriction::Regularized;
+    p.mu = number(narg, arg, iarg + 2, "friction");
+    if (!(p.mu >= 0.0))
+      lmp->error->all(FLERR, "{}: friction coefficient mu must be >= 0, not {}", command,
+                      arg[iarg + 2]);
+    return 3;
+  }
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   K_n, R_c and the restitution modulus from what was given; checks
+------------------------------------------------------------------------- */
+
+ContactSpec ContactParser::finish(int dimension) const
+{
+  ContactSpec out = spec;
+  peridem::ContactParams &p = out.params;
+  Error *error = lmp->error;
+  if (have_material == have_kn)
+    error->all(FLERR, "{}: give exactly one of 'material FILE NAME' and 'Kn value'", command);
+  if (have_rc == have_factor)
+    error->all(FLERR, "{}: give exactly one of 'Rc value' and 'Rc_factor f' (with spacing h)",
+               command);
+
+  out.horizon = horizon > 0.0 ? horizon : (have_material ? material_horizon : 0.0);
+  if (have_material) {
+    if (!(out.horizon > 0.0))
+      error->all(FLERR, "{}: {} has no horizon: add horizon to the file or the command", command,
+                 out.origin);
+    double k = material_k;
+    if (std::isnan(k) && !std::isnan(material_E)) {
+      const double nu = dimension == 2 ? 1.0 / 3.0 : 0.25; // bond-based Poisson ratio
+      k = material_E / (3.0 * (1.0 - 2.0 * nu));
+    }
+    if (!(k > 0.0))
+      error->all(FLERR, "{}: {} gives neither a bulk modulus K nor E", command, out.origin);
+    out.bulk_modulus = k;
+    p.Kn = peridem::contact_stiffness(k, out.horizon);
+  } else {
+    out.origin = "Kn given";
+    if (out.horizon > 0.0)
+      out.bulk_modulus = p.Kn * peridem::kContactPi * std::pow(out.horizon, 5) / 18.0;
+  }
+
+  if (have_factor) {
+    if (!(spacing > 0.0))
+      error->all(FLERR, "{}: Rc_factor needs the node spacing: add 'spacing h'", command);
+    p.Rc = rc_factor * spacing;
+  }
+
+  if (p.damping == peridem::ContactDamping::Restitution) {
+    if (!(out.bulk_modulus > 0.0))
+      error->all(FLERR,
+                 "{}: damping restitution needs the bulk modulus: use 'material FILE NAME', or "
+                 "give 'horizon eps' with Kn",
+                 command);
+    p.kappa_eff = out.bulk_modulus;
+  }
+
+  if (out.horizon > 0.0 && p.Rc > out.horizon && lmp->comm->me == 0)
+    error->warning(FLERR, "{}: contact radius Rc = {} is larger than the horizon {}", command, p.Rc,
+                   out.horizon);
+
+  try {
+    peridem::check_contact_params(p);
+  } catch (peridem::ParameterError &e) {
+    error->all(FLERR, "{}: {}", command, e.what());
+  }
+  return out;
+}
+
+/* ---------------------------------------------------------------------- */
+
+ContactSpec parse_contact(LAMMPS *lmp, const std::string &command, int narg, char **arg,
+                          int dimension)
+{
+  ContactParser parser(lmp, command);
+  for (int iarg = 0; iarg < narg;) {
+    const int used = parser.consume(narg, arg, iarg);
+    if (used == 0) lmp->error->all(FLERR, "{}: unknown keyword {}", command, arg[iarg]);
+    iarg += used;
+  }
+  return parser.finish(dimension);
+}
+
+std::string describe_contact(const ContactSpec &spec)
+{
+  const peridem::ContactParams &p = spec.params;
+  std::string damping = "none";
+  if (p.damping == peridem::ContactDamping::Nodal)
+    damping = fmt::format("nodal r_d = {}", p.r_d);
+  else if (p.damping == peridem::ContactDamping::Restitution)
+    damping = fmt::format("restitution eps_n = {} C = {}", p.eps_n, p.C);
+  std::string friction = "none";
+  if (p.friction == peridem::ContactFriction::Regularized)
+    friction = fmt::format("regularized mu = {}", p.mu);
+  else if (p.friction == peridem::ContactFriction::Coulomb)
+    friction = fmt::format("coulomb mu = {}", p.mu);
+  return fmt::format("Kn = {} ({}), Rc = {}, damping {}, friction {}", p.Kn, spec.origin, p.Rc,
+                     damping, friction);
+}
+
+} // namespace PERIDEM

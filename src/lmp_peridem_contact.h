@@ -1,0 +1,82 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: contact keywords seen from LAMMPS commands.
+
+   The keywords below set one peridem::ContactParams (peridem_contact_law.h).
+   They are shared by `pair_coeff` of pair_style peridem/contact and by
+   `fix peridem/wall`, so both read the same words the same way:
+
+     material FILE NAME      K_n = 18 k/(pi eps^5) from the material's bulk
+                             modulus k and horizon eps (contact_stiffness)
+     Kn value                K_n given directly (force/(length volume^2))
+     horizon eps             horizon (overrides the material's; with Kn it
+                             gives k = pi eps^5 K_n/18 for restitution)
+     Rc value                contact radius R_c
+     Rc_factor f             R_c = f h with the node spacing h of
+     spacing h               (the seeds use f = 0.95; R_c = eps/5 is Rc)
+     damping none | nodal r_d | restitution eps_n C
+     friction none | regularized mu | coulomb mu
+
+   Exactly one of material / Kn, and one of Rc / Rc_factor are required.
+   Rc larger than the horizon is allowed with a warning (see parse notes in
+   the .cpp). Errors name the command and the bad value; no physics here.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PERIDEM_CONTACT_H
+#define LMP_PERIDEM_CONTACT_H
+
+#include "peridem_contact_law.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace PERIDEM {
+
+// The parsed result: the law's parameters and what they were derived from.
+struct ContactSpec {
+  peridem::ContactParams params;
+  double bulk_modulus = 0.0; // k behind K_n (0: Kn given without a horizon)
+  double horizon = 0.0;      // eps (0: not known)
+  double density = 0.0;      // from the material (0: not known)
+  std::string origin;        // for the log, e.g. "material M1 of file"
+};
+
+// Collects contact keywords among other keywords of a command (layered
+// parsing: the owner tries consume() first and handles what it returns 0 for).
+class ContactParser {
+ public:
+  ContactParser(LAMMPS_NS::LAMMPS *lmp, std::string command);
+
+  // If arg[iarg] is a contact keyword, reads it with its values and returns
+  // the number of words used; returns 0 for any other word.
+  int consume(int narg, char **arg, int iarg);
+
+  // Completes and checks the parameters for a simulation of this dimension;
+  // ends the run with a LAMMPS error naming the command if they are invalid.
+  ContactSpec finish(int dimension) const;
+
+ private:
+  LAMMPS_NS::LAMMPS *lmp;
+  std::string command;
+  ContactSpec spec;
+  bool have_material = false, have_kn = false, have_rc = false, have_factor = false;
+  double material_k = 0.0, material_horizon = 0.0, material_E = 0.0;
+  double horizon = 0.0, rc_factor = 0.0, spacing = 0.0;
+
+  // arg[iarg] as a number (error if missing), and as a number > 0
+  double number(int narg, char **arg, int iarg, const char *what) const;
+  double positive(int narg, char **arg, int iarg, const char *what) const;
+};
+
+// All of arg[0..narg-1] must be contact keywords (pair_coeff after the types).
+ContactSpec parse_contact(LAMMPS_NS::LAMMPS *lmp, const std::string &command, int narg, char **arg,
+                          int dimension);
+
+// One line for the log: "Kn = ..., Rc = ..., damping ..., friction ...".
+std::string describe_contact(const ContactSpec &spec);
+
+} // namespace PERIDEM
+
+#endif

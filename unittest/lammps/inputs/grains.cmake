@@ -1,0 +1,57 @@
+# create_peridem_grains / cut_peridem_bonds (issue 4)
+
+# examples: the same nodes, volumes, grain IDs and bonds on 1 and 2 ranks
+peridem_add_example_test(grains_convex grains-convex in.grains_convex 1 2)
+peridem_add_example_test(grains_concave grains-concave in.grains_concave 1 2)
+peridem_add_example_test(grains_notched grains-notched in.grains_notched 1 2)
+peridem_add_example_test(grains_3d grains-3d in.grains_3d 1 2)
+
+# bad input: clear errors naming the command and the bad value
+set(_g ${_in}/grains)
+set(_ok "spacing 0.1 horizon 0.3 density 1 at 0 0 0")
+peridem_add_error_test(grains_self_intersecting ${_g}/grain_box.in
+  "create_peridem_grains: .*self_intersecting.poly.*self-intersecting"
+  -var grain "file ${_g}/self_intersecting.poly ${_ok}")
+peridem_add_error_test(grains_hole_outside ${_g}/grain_box.in
+  "create_peridem_grains: .*hole.* is not strictly inside the outer ring"
+  -var grain "file ${_g}/hole_outside.poly ${_ok}")
+peridem_add_error_test(grains_spacing_too_large ${_g}/grain_box.in
+  "create_peridem_grains: node spacing 1 is larger than the grain"
+  -var grain "disk radius 0.3 spacing 1 horizon 3 density 1 at 0 0 0")
+peridem_add_error_test(grains_horizon_below_spacing ${_g}/grain_box.in
+  "create_peridem_grains: horizon 0.05 is smaller than the node spacing 0.1"
+  -var grain "disk radius 1 spacing 0.1 horizon 0.05 density 1 at 0 0 0")
+peridem_add_error_test(grains_unknown_shape ${_g}/grain_box.in
+  "create_peridem_grains: unknown shape 'blob'"
+  -var grain "blob radius 1 ${_ok}")
+peridem_add_error_test(grains_missing_file ${_g}/grain_box.in
+  "create_peridem_grains: cannot open polygon file 'no_such.poly'"
+  -var grain "file no_such.poly ${_ok}")
+peridem_add_error_test(grains_missing_mesh ${_g}/grain_box.in
+  "create_peridem_grains: cannot open Gmsh file 'no_such.msh'"
+  -var grain "gmsh no_such.msh horizon 0.3 density 1 at 0 0 0")
+peridem_add_error_test(grains_overlap ${_g}/grain_box.in
+  "create_peridem_grains: grain 1 at \\(1.5, 0, 0\\) overlaps existing atoms"
+  -var before "create_peridem_grains 1 disk radius 1 ${_ok}"
+  -var grain "disk radius 1 spacing 0.1 horizon 0.3 density 1 at 1.5 0 0 overlap 0.05")
+peridem_add_error_test(grains_bonds_per_atom ${_g}/grain_box.in
+  "create_peridem_grains: a grain node needs 14 bonds but atoms can hold 4; set extra/bond/per/atom"
+  -var nbond 4 -var grain "disk radius 1 ${_ok}")
+peridem_add_error_test(grains_unknown_keyword ${_g}/grain_box.in
+  "create_peridem_grains: unknown keyword or shape parameter 'radius2'"
+  -var grain "disk radius2 1 ${_ok}")
+peridem_add_error_test(grains_no_density ${_g}/grain_box.in
+  "create_peridem_grains: no density"
+  -var grain "disk spacing 0.1 horizon 0.3 at 0 0 0")
+peridem_add_error_test(grains_3d_shape_in_2d ${_g}/grain_box.in
+  "create_peridem_grains: shape sphere needs a 3D box"
+  -var grain "sphere radius 1 ${_ok}")
+peridem_add_error_test(grains_outside_box ${_g}/grain_box.in
+  "create_peridem_grains: .* grain nodes are outside the simulation box"
+  -var before "change_box all boundary f f p"
+  -var grain "disk radius 1 spacing 0.1 horizon 0.3 density 1 at 4.5 0 0")
+peridem_add_error_test(cut_bonds_bad_segment ${_g}/grain_box.in
+  "cut_peridem_bonds: segment 1 1 1 1 has zero length"
+  -var before "create_peridem_grains 1 disk radius 1 ${_ok}"
+  -var grain "disk radius 1 spacing 0.1 horizon 0.3 density 1 at 3 3 0"
+  -var after "cut_peridem_bonds all segment 1 1 1 1")

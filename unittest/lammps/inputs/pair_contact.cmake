@@ -1,0 +1,10 @@
+# pair_style peridem/contact
+
+# head-on collision without damping or friction: energy conserved to 1e-5,
+# and the same thermo output on 1 and 2 ranks
+peridem_add_example_test(contact_collision contact-collision in.collision 1 2)
+add_test(NAME contact_collision_energy
+  COMMAND lmp_peridem -in ${_in}/contact_energy_check.in -log none -echo none
+          -var example in.collision -var limit 1e-5 -var potentials ${PROJECT_SOURCE_DIR}/potentials
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/examples/contact-collision)
+set_tests_properties(contact_collision_energy PROPERTIES PASS_REGULAR_EXPRESSION "PERIDEM-PASS")

@@ -1,0 +1,56 @@
+# fix peridem/wall (issue 6) and the shared contact keywords (lmp_peridem_contact)
+
+# example: 1 and 2 MPI ranks give the same thermo output
+peridem_add_example_test(wall_drop wall-drop in.wall_drop 1 2)
+
+# bad input gets a clear error naming the command and the value
+function(peridem_wall_error name wallargs regex)
+  peridem_add_error_test(wall_${name} ${_in}/wall_error.in "${regex}"
+    -var wall "${wallargs}" -var nsteps 0)
+endfunction()
+peridem_wall_error(order "ylo 2.0 yhi 1.0 Kn 1 Rc 0.5"
+  "fix peridem/wall: wall ylo at 2 is not below wall yhi at 1")
+peridem_wall_error(variable_order "ylo 3.5 yhi v_top Kn 1 Rc 0.5"
+  "fix peridem/wall: wall ylo at 3.5 is not below wall yhi at 3 \\(from its variable\\)")
+peridem_wall_error(rc_zero "ylo 0.0 Kn 1 Rc 0" "fix peridem/wall: Rc \\(contact radius\\) must be > 0, not 0")
+peridem_wall_error(rc_negative "ylo 0.0 Kn 1 Rc -0.1" "Rc \\(contact radius\\) must be > 0, not -0.1")
+peridem_wall_error(not_equal_style "ylo 0.0 yhi v_atomic Kn 1 Rc 0.5"
+  "fix peridem/wall: variable atomic for wall yhi is not equal-style")
+peridem_wall_error(no_variable "ylo 0.0 yhi v_nothing Kn 1 Rc 0.5"
+  "variable nothing for wall yhi does not exist")
+peridem_wall_error(unknown_wall "ylo 0.0 ymid 1.0 Kn 1 Rc 0.5"
+  "fix peridem/wall: unknown wall or keyword ymid")
+peridem_wall_error(unknown_velocity_wall "ylo 0.0 velocity top 1.0 Kn 1 Rc 0.5"
+  "fix peridem/wall: unknown wall top")
+peridem_wall_error(z_in_2d "zlo 0.0 Kn 1 Rc 0.5" "wall zlo needs a 3D simulation")
+peridem_wall_error(undefined_moving "ylo 0.0 velocity yhi 1.0 Kn 1 Rc 0.5"
+  "wall yhi moves but is not defined")
+peridem_wall_error(mu_negative "ylo 0.0 Kn 1 Rc 0.5 friction coulomb -0.3"
+  "friction coefficient mu must be >= 0, not -0.3")
+peridem_wall_error(rd_range "ylo 0.0 Kn 1 Rc 0.5 damping nodal 1.5"
+  "damping ratio r_d must lie in \\[0, 1\\], not 1.5")
+peridem_wall_error(eps_range "ylo 0.0 Kn 1 Rc 0.5 horizon 1 damping restitution 0 1"
+  "restitution eps_n must lie in \\(0, 1\\], not 0")
+peridem_wall_error(restitution_needs_k "ylo 0.0 Kn 1 Rc 0.5 damping restitution 0.9 1"
+  "damping restitution needs the bulk modulus")
+peridem_wall_error(no_kn "ylo 0.0 Rc 0.5" "give exactly one of 'material FILE NAME' and 'Kn value'")
+peridem_wall_error(factor_no_spacing "ylo 0.0 Kn 1 Rc_factor 0.95"
+  "Rc_factor needs the node spacing: add 'spacing h'")
+peridem_wall_error(unknown_keyword "ylo 0.0 Kn 1 Rc 0.5 stiffness 3"
+  "fix peridem/wall: unknown wall or keyword stiffness")
+peridem_wall_error(bad_servo "ylo 0.0 yhi 2.0 servo yhi 1.0 -1 0.5 Kn 1 Rc 0.5"
+  "servo gain must be > 0, not -1")
+peridem_wall_error(shear_normal "ylo 0.0 shear ylo 0.1 0.2 0 Kn 1 Rc 0.5"
+  "shear velocity of wall ylo must lie in the wall")
+# a node completely past a wall (by more than Rc) ends the run by default
+peridem_add_error_test(wall_lost_node ${_in}/wall_error.in
+  "atom 1 is 1.5 beyond wall yhi \\(more than Rc = 0.5\\): it crossed the wall"
+  -var wall "ylo -1 yhi -0.5 Kn 1 Rc 0.5" -var nsteps 0)
+
+# Rc larger than the horizon: a warning (doc/fix_peridem_wall.rst), the run goes on
+add_test(NAME wall_rc_above_horizon_warns
+  COMMAND lmp_peridem -in ${_in}/wall_error.in -log none -var nsteps 0
+          -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 0.3")
+set_tests_properties(wall_rc_above_horizon_warns PROPERTIES
+  PASS_REGULAR_EXPRESSION "WARNING: fix peridem/wall: contact radius Rc = 0.5 is larger than the horizon 0.3"
+  FAIL_REGULAR_EXPRESSION "ERROR")

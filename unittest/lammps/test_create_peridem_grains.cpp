@@ -1,0 +1,242 @@
+// create_peridem_grains and cut_peridem_bonds (issue 4): node counts and
+// volumes, the same bonds as the core geometry library, no bond across a
+// notch or crack, grain IDs, 3D and Gmsh grains. Ranks: 1 here; 1 vs 2 ranks
+// is checked by the example tests (unittest/lammps/inputs/grains.cmake).
+
+#include "lammps_fixture.h"
+
+#include "atom.h"
+#include "lammps.h"
+
+#include "peridem_geometry_grain.h"
+#include "peridem_geometry_shapes.h"
+#include "peridem_geometry_visibility.h"
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+using TagBond = std::pair<tagint, tagint>;
+
+// a box for grains: units, dimension, region bounds, bond capacity
+std::string grain_box(const std::string &units, int dimension, const std::string &bounds,
+                      int bonds_per_atom)
+{
+  return "units " + units + "\ndimension " + std::to_string(dimension) +
+         "\nboundary p p p\natom_style peridem\natom_modify map array\nregion box block " + bounds +
+         "\ncreate_box 2 box bond/types 1 extra/bond/per/atom " + std::to_string(bonds_per_atom) +
+         " extra/special/per/atom 0\nspecial_bonds lj/coul 0.0 1.0 1.0";
+}
+
+const std::string box2d = grain_box("lj", 2, "-4 4 -4 4 -0.5 0.5", 40);
+
+// every bond once, as (smaller tag, larger tag)
+std::set<TagBond> bond_set(LAMMPS *lmp)
+{
+  std::set<TagBond> out;
+  Atom *atom = lmp->atom;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < atom->num_bond[i]; m++) {
+      const tagint a = atom->tag[i], b = atom->bond_atom[i][m];
+      out.emplace(std::min(a, b), std::max(a, b));
+    }
+  return out;
+}
+
+std::set<TagBond> core_bonds(const std::vector<peridem::Bond> &bonds, tagint tag0)
+{
+  std::set<TagBond> out;
+  for (const auto &b : bonds) out.emplace(tag0 + b.first, tag0 + b.second);
+  return out;
+}
+
+double sum_volume(LAMMPS *lmp)
+{
+  double v = 0.0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) v += lmp->atom->vfrac[i];
+  return v;
+}
+
+peridem::Vec2 x0_of(LAMMPS *lmp, tagint tag)
+{
+  const int i = lmp->atom->map(tag);
+  return {lmp->atom->x0[i][0], lmp->atom->x0[i][1]};
+}
+
+} // namespace
+
+class CreatePeridemGrainsTest : public LammpsTest {};
+
+TEST_F(CreatePeridemGrainsTest, CellVolumesAreSpacingSquared)
+{
+  command(box2d);
+  command("create_peridem_grains 1 disk radius 1 spacing 0.1 horizon 0.3 density 2.5 at 0 0 0");
+  const auto nodes = peridem::latticeNodes(peridem::makeShape("disk", {}), 0.1);
+  ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(nodes.size()));
+  EXPECT_NEAR(sum_volume(lmp), nodes.size() * 0.01, 1e-12);
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    EXPECT_DOUBLE_EQ(lmp->atom->rmass[i], 2.5 * lmp->atom->vfrac[i]);
+    EXPECT_EQ(lmp->atom->molecule[i], 1);
+    EXPECT_EQ(lmp->atom->type[i], 1);
+  }
+}
+
+TEST_F(CreatePeridemGrainsTest, ExactVolumesSumToShapeArea)
+{
+  command(box2d);
+  command("create_peridem_grains 2 plus radius 1 arm_width 0.4 spacing 0.07 horizon 0.21 "
+          "density 1 at 0.5 -0.25 0 rotate 33 volume exact");
+  const double area = peridem::makeShape("plus", {{"radius", 1}, {"arm_width", 0.4}}).area();
+  EXPECT_NEAR(sum_volume(lmp), area, 1e-12 * area);
+}
+
+TEST_F(CreatePeridemGrainsTest, BondsEqualCoreLibraryAndNodesArePlaced)
+{
+  command(box2d);
+  command("create_peridem_grains 1 notched_plate spacing 0.05 horizon 0.15 density 1 "
+          "at 1 -0.5 0 rotate 30");
+  peridem::Polygon shape = peridem::makeShape("notched_plate", {});
+  const peridem::Grain2D g = peridem::discretizeGrain(shape, 0.05, 0.15);
+  ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(g.nodes.size()));
+  EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));
+  EXPECT_EQ(lmp->atom->nbonds, static_cast<bigint>(g.bonds.size()));
+
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (std::size_t k = 0; k < g.nodes.size(); k++) {
+    const peridem::Vec2 p = g.nodes.x[k], x = x0_of(lmp, 1 + k);
+    EXPECT_NEAR(x.x, 1 + c * p.x - s * p.y, 1e-12);
+    EXPECT_NEAR(x.y, -0.5 + s * p.x + c * p.y, 1e-12);
+  }
+}
+
+TEST_F(CreatePeridemGrainsTest, NoBondLeavesNonconvexShapes)
+{
+  command(box2d);
+  const std::map<std::string, std::string> shapes = {{"notched_plate", "at -2 -2 0"},
+                                                     {"v_notched_plate", "at 2 -2 0"},
+                                                     {"ring", "at -2 2 0"},
+                                                     {"plus", "at 2 2 0"},
+                                                     {"neck", "at 0 0 0"}};
+  tagint tag0 = 1;
+  for (const auto &sh : shapes) {
+    command("create_peridem_grains 1 " + sh.first + " spacing 0.06 horizon 0.18 density 1 " +
+            sh.second);
+    // in the grain frame (node k has atom ID tag0 + k), where the nodes on the
+    // boundary lie exactly on it
+    const peridem::Polygon shape = peridem::makeShape(sh.first, {});
+    const auto nodes = peridem::latticeNodes(shape, 0.06);
+    int checked = 0;
+    for (const auto &b : bond_set(lmp)) {
+      if (b.first < tag0 || b.first >= tag0 + static_cast<tagint>(nodes.size())) continue;
+      EXPECT_TRUE(
+          peridem::segmentInsideExact(shape, nodes.x[b.first - tag0], nodes.x[b.second - tag0]))
+          << sh.first << " bond " << b.first << "-" << b.second;
+      checked++;
+    }
+    EXPECT_GT(checked, 0) << sh.first;
+    tag0 += nodes.size();
+  }
+}
+
+TEST_F(CreatePeridemGrainsTest, NotchKeywordAndCutCommandRemoveCrossingBonds)
+{
+  command(box2d);
+  // crack at creation (grain frame), and the same crack cut later on a copy
+  command("create_peridem_grains 1 disk radius 1 spacing 0.1 horizon 0.3 density 1 at -2 0 0 "
+          "notch -0.63 -0.21 0.52 0.33");
+  command("create_peridem_grains 1 disk radius 1 spacing 0.1 horizon 0.3 density 1 at 2 0 0");
+  const tagint n = lmp->atom->natoms / 2;
+  const bigint uncut = static_cast<bigint>(bond_set(lmp).size());
+  command("write_data " + scratch() + "grains.data");
+  command("clear");
+  command("units lj\ndimension 2\nboundary p p p\natom_style peridem\natom_modify map array");
+  command("read_data " + scratch() + "grains.data");
+  command("special_bonds lj/coul 0.0 1.0 1.0\npair_style zero 0.5\npair_coeff * *");
+  command("comm_modify cutoff 1.0");
+  command("cut_peridem_bonds all segment 1.37 -0.21 2.52 0.33");
+
+  const peridem::CutSegment left{{-2.63, -0.21}, {-1.48, 0.33}}, right{{1.37, -0.21}, {2.52, 0.33}};
+  std::set<TagBond> first, second;
+  for (const auto &b : bond_set(lmp)) {
+    const auto &cut = b.first <= n ? left : right;
+    EXPECT_FALSE(peridem::bondCrossesCut(x0_of(lmp, b.first), x0_of(lmp, b.second), cut));
+    if (b.first <= n)
+      first.emplace(b);
+    else
+      second.emplace(b.first - n, b.second - n);
+  }
+  EXPECT_EQ(first, second); // the same crack, at creation or later
+  EXPECT_LT(static_cast<bigint>(bond_set(lmp).size()), uncut);
+  EXPECT_EQ(lmp->atom->nbonds, static_cast<bigint>(bond_set(lmp).size()));
+}
+
+TEST_F(CreatePeridemGrainsTest, GrainIdsAreNewAndUnique)
+{
+  command(box2d);
+  command("create_peridem_grains 1 disk radius 0.5 spacing 0.1 horizon 0.3 density 1 "
+          "at -2 -2 0 at 0 -2 0 at 2 -2 0");
+  command("create_peridem_grains 2 hexagon radius 0.5 spacing 0.1 horizon 0.3 density 1 "
+          "at -2 2 0 at 2 2 0 rotate random 42 overlap 0.05");
+  std::map<tagint, std::set<tagint>> ids; // grain ID -> atom IDs
+  for (int i = 0; i < lmp->atom->nlocal; i++) ids[lmp->atom->molecule[i]].insert(lmp->atom->tag[i]);
+  ASSERT_EQ(ids.size(), 5u);
+  tagint expect = 1;
+  for (const auto &g : ids) {
+    EXPECT_EQ(g.first, expect++);
+    // contiguous atom IDs per grain
+    EXPECT_EQ(*g.second.rbegin() - *g.second.begin() + 1, static_cast<tagint>(g.second.size()));
+  }
+  // no bond joins two grains
+  for (const auto &b : bond_set(lmp))
+    EXPECT_EQ(lmp->atom->molecule[lmp->atom->map(b.first)],
+              lmp->atom->molecule[lmp->atom->map(b.second)]);
+}
+
+TEST_F(CreatePeridemGrainsTest, MaterialGivesDensityAndHorizon)
+{
+  command(grain_box("si", 2, "-0.01 0.01 -0.01 0.01 -0.001 0.001", 60));
+  command("create_peridem_grains 1 disk radius 0.002 spacing 0.0002 at 0 0 0 material " +
+          std::string(PERIDEM_SOURCE_DIR) + "/potentials/peridem_M1.peridem M1");
+  const peridem::Grain2D g = peridem::discretizeShape("disk", {{"radius", 0.002}}, 0.0002, 0.6e-3);
+  EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));
+  EXPECT_DOUBLE_EQ(lmp->atom->rmass[0], 1200 * lmp->atom->vfrac[0]);
+}
+
+TEST_F(CreatePeridemGrainsTest, SolidAndExtrudedGrainsEqualCoreLibrary)
+{
+  command(grain_box("lj", 3, "-3 3 -3 3 -3 3", 40));
+  command("create_peridem_grains 1 sphere radius 1 spacing 0.2 horizon 0.4 density 1 at -1.5 0 0");
+  const auto sphere =
+      peridem::discretizeGrain3D(peridem::Shape3D::sphere(1.0), 0.2, 0.4, peridem::Pruning::Seed);
+  ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(sphere.nodes.size()));
+  EXPECT_EQ(bond_set(lmp), core_bonds(sphere.bonds, 1));
+  EXPECT_NEAR(sum_volume(lmp), sphere.nodes.size() * 0.008, 1e-12);
+
+  command("create_peridem_grains 1 plus extrude 0.6 spacing 0.1 horizon 0.2 density 1 at 1.5 0 0");
+  const auto plus =
+      peridem::discretizeGrain3D(peridem::Shape3D::extrusion(peridem::makeShape("plus", {}), 0.6),
+                                 0.1, 0.2, peridem::Pruning::Seed);
+  std::set<TagBond> mine;
+  const tagint tag0 = sphere.nodes.size() + 1;
+  for (const auto &b : bond_set(lmp))
+    if (b.first >= tag0) mine.insert(b);
+  EXPECT_EQ(mine, core_bonds(plus.bonds, tag0));
+}
+
+TEST_F(CreatePeridemGrainsTest, GmshGrainVolumesSumToMeshArea)
+{
+  command(box2d);
+  const std::string mesh =
+      std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/square_hole_v41.msh";
+  command("create_peridem_grains 1 gmsh " + mesh + " horizon 0.5 density 1 at 0 0 0");
+  const peridem::Mesh2D m = peridem::readGmshMesh(mesh);
+  const peridem::Grain2D g = peridem::meshGrain(m, 0.5);
+  EXPECT_EQ(lmp->atom->natoms, static_cast<bigint>(g.nodes.size()));
+  EXPECT_NEAR(sum_volume(lmp), m.area(), 1e-12 * m.area());
+  EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));
+}
