@@ -75,8 +75,11 @@ void CutPeridemBonds::command(int narg, char **arg)
     while (m < atom->num_bond[i]) {
       const int j = atom->map(atom->bond_atom[i][m]);
       if (j < 0)
-        error->one(FLERR, "{}: bond partner {} of atom {} is missing", CMD, atom->bond_atom[i][m],
-                   tag[i]);
+        error->one(FLERR,
+                   "{}: bond partner {} of atom {} is beyond the ghost cutoff of proc {}: define "
+                   "bond_style peridem first (it sets the communication cutoff) or use "
+                   "comm_modify cutoff with at least the longest bond",
+                   CMD, atom->bond_atom[i][m], tag[i], comm->me);
       bool cut = false;
       if ((mask[i] & groupbit) && (mask[j] & groupbit)) {
         const int a = tag[i] < tag[j] ? i : j, b = tag[i] < tag[j] ? j : i;

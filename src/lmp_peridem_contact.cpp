@@ -91,8 +91,11 @@ int ContactParser::consume(int narg, char **arg, int iarg)
   }
   if (key == "damping") {
     if (iarg + 1 >= narg)
-      lmp->error->all(FLERR, "{}: damping needs none, nodal r_d or restitution eps_n C", command);
+      lmp->error->all(FLERR,
+                      "{}: damping needs none, nodal r_d, restitution eps_n C or centroid eps_n C",
+                      command);
     const std::string mode = arg[iarg + 1];
+    spec.centroid = false;
     if (mode == "none") {
       p.damping = peridem::ContactDamping::None;
       return 2;
@@ -105,19 +108,28 @@ int ContactParser::consume(int narg, char **arg, int iarg)
                         arg[iarg + 2]);
       return 3;
     }
-    if (mode == "restitution") {
-      p.damping = peridem::ContactDamping::Restitution;
-      p.eps_n = number(narg, arg, iarg + 2, "damping restitution");
-      p.C = number(narg, arg, iarg + 3, "damping restitution (C)");
+    if (mode == "restitution" || mode == "centroid") {
+      if (mode == "centroid" && !centroid_allowed)
+        lmp->error->all(FLERR,
+                        "{}: damping centroid acts between grains and is available in pair_coeff "
+                        "of pair_style peridem/contact only",
+                        command);
+      spec.centroid = mode == "centroid";
+      p.damping =
+          spec.centroid ? peridem::ContactDamping::None : peridem::ContactDamping::Restitution;
+      const std::string what = "damping " + mode;
+      p.eps_n = number(narg, arg, iarg + 2, what.c_str());
+      p.C = number(narg, arg, iarg + 3, (what + " (C)").c_str());
       if (!(p.eps_n > 0.0 && p.eps_n <= 1.0))
-        lmp->error->all(FLERR, "{}: restitution eps_n must lie in (0, 1], not {}", command,
+        lmp->error->all(FLERR, "{}: {} eps_n must lie in (0, 1], not {}", command, mode,
                         arg[iarg + 2]);
       if (!(p.C > 0.0))
-        lmp->error->all(FLERR, "{}: restitution constant C must be > 0, not {}", command,
+        lmp->error->all(FLERR, "{}: {} constant C must be > 0, not {}", command, mode,
                         arg[iarg + 3]);
       return 4;
     }
-    lmp->error->all(FLERR, "{}: damping must be none, nodal or restitution, not {}", command, mode);
+    lmp->error->all(FLERR, "{}: damping must be none, nodal, restitution or centroid, not {}",
+                    command, mode);
   }
   if (key == "friction") {
     if (iarg + 1 >= narg)
@@ -183,12 +195,12 @@ ContactSpec ContactParser::finish(int dimension) const
     p.Rc = rc_factor * spacing;
   }
 
-  if (p.damping == peridem::ContactDamping::Restitution) {
+  if (p.damping == peridem::ContactDamping::Restitution || out.centroid) {
     if (!(out.bulk_modulus > 0.0))
       error->all(FLERR,
-                 "{}: damping restitution needs the bulk modulus: use 'material FILE NAME', or "
-                 "give 'horizon eps' with Kn",
-                 command);
+                 "{}: damping {} needs the bulk modulus: use 'material FILE NAME', or give "
+                 "'horizon eps' with Kn",
+                 command, out.centroid ? "centroid" : "restitution");
     p.kappa_eff = out.bulk_modulus;
   }
 
@@ -207,9 +219,10 @@ ContactSpec ContactParser::finish(int dimension) const
 /* ---------------------------------------------------------------------- */
 
 ContactSpec parse_contact(LAMMPS *lmp, const std::string &command, int narg, char **arg,
-                          int dimension)
+                          int dimension, bool allow_centroid)
 {
   ContactParser parser(lmp, command);
+  parser.allow_centroid(allow_centroid);
   for (int iarg = 0; iarg < narg;) {
     const int used = parser.consume(narg, arg, iarg);
     if (used == 0) lmp->error->all(FLERR, "{}: unknown keyword {}", command, arg[iarg]);
@@ -226,6 +239,7 @@ std::string describe_contact(const ContactSpec &spec)
     damping = fmt::format("nodal r_d = {}", p.r_d);
   else if (p.damping == peridem::ContactDamping::Restitution)
     damping = fmt::format("restitution eps_n = {} C = {}", p.eps_n, p.C);
+  if (spec.centroid) damping = fmt::format("centroid eps_n = {} C = {}", p.eps_n, p.C);
   std::string friction = "none";
   if (p.friction == peridem::ContactFriction::Regularized)
     friction = fmt::format("regularized mu = {}", p.mu);

@@ -13,7 +13,9 @@
      Rc value                contact radius R_c
      Rc_factor f             R_c = f h with the node spacing h of
      spacing h               (the seeds use f = 0.95; R_c = eps/5 is Rc)
-     damping none | nodal r_d | restitution eps_n C
+     damping none | nodal r_d | restitution eps_n C | centroid eps_n C
+                             (centroid: dashpot between grain centres, PeriDEM
+                             seed eq. 26-30; pair_style peridem/contact only)
      friction none | regularized mu | coulomb mu
 
    Exactly one of material / Kn, and one of Rc / Rc_factor are required.
@@ -41,6 +43,11 @@ struct ContactSpec {
   double horizon = 0.0;      // eps (0: not known)
   double density = 0.0;      // from the material (0: not known)
   std::string origin;        // for the log, e.g. "material M1 of file"
+  // damping centroid eps_n C: a dashpot between the centres of two grains in
+  // contact (PeriDEM seed eq. 26-30), applied by pair_style peridem/contact.
+  // params.damping is then None (no nodal dashpot) and params.eps_n, C and
+  // kappa_eff hold eps_bar, C_bar and kappa_eff of eq. 28.
+  bool centroid = false;
 };
 
 // Collects contact keywords among other keywords of a command (layered
@@ -57,11 +64,16 @@ class ContactParser {
   // ends the run with a LAMMPS error naming the command if they are invalid.
   ContactSpec finish(int dimension) const;
 
+  // Accept 'damping centroid' (grain-level damping needs the pair style's
+  // per-grain centres; a wall fix leaves it off and gets an error).
+  void allow_centroid(bool yes) { centroid_allowed = yes; }
+
  private:
   LAMMPS_NS::LAMMPS *lmp;
   std::string command;
   ContactSpec spec;
   bool have_material = false, have_kn = false, have_rc = false, have_factor = false;
+  bool centroid_allowed = false;
   double material_k = 0.0, material_horizon = 0.0, material_E = 0.0;
   double horizon = 0.0, rc_factor = 0.0, spacing = 0.0;
 
@@ -72,7 +84,7 @@ class ContactParser {
 
 // All of arg[0..narg-1] must be contact keywords (pair_coeff after the types).
 ContactSpec parse_contact(LAMMPS_NS::LAMMPS *lmp, const std::string &command, int narg, char **arg,
-                          int dimension);
+                          int dimension, bool allow_centroid = false);
 
 // One line for the log: "Kn = ..., Rc = ..., damping ..., friction ...".
 std::string describe_contact(const ContactSpec &spec);

@@ -7,6 +7,8 @@
    intact bond are excluded through the special list (special_bonds lj 0.0
    for 1-2 pairs); fix peridem/bonds removes a broken bond's nodes from each
    other's special lists, so the pieces of a broken grain touch again.
+   damping centroid (PeriDEM seed §2.3.2) acts between grain centres:
+   compute_centroid_damping below.
 ------------------------------------------------------------------------- */
 
 #include "pair_peridem_contact.h"
@@ -24,6 +26,7 @@
 
 #include "lmp_peridem_compat.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -37,7 +40,7 @@ const char *const STYLE = "pair_style peridem/contact";
 /* ---------------------------------------------------------------------- */
 
 PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
-    : Pair(lmp), cut(nullptr), self_contact(1), dissipated(0.0)
+    : Pair(lmp), cut(nullptr), self_contact(1), dissipated(0.0), centroid_on(0), grains_stale(true)
 {
   restartinfo = 1;
   single_enable = 0;
@@ -82,6 +85,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
   int **firstneigh = list->firstneigh;
 
   double dissipated_now = 0.0;
+  touch_local.clear();
   peridem::ContactInput in;
   in.dt = dt;
 
@@ -117,8 +121,16 @@ void PairPeridemContact::compute(int eflag, int vflag)
       in.mass_i = rmass[i];
       in.mass_j = rmass[j];
 
-      const peridem::ContactResult res = peridem::contact_force(in, spec[itype][jtype].params);
+      const PERIDEM::ContactSpec &sp = spec[itype][jtype];
+      const peridem::ContactResult res = peridem::contact_force(in, sp.params);
       if (!res.contact) continue;
+      // two grains closer than R_c: damping centroid of this grain pair
+      if (sp.centroid && in.ref_dist < 0.0) {
+        if (molecule[i] < molecule[j])
+          touch_local.push_back({molecule[i], molecule[j], itype, jtype});
+        else
+          touch_local.push_back({molecule[j], molecule[i], jtype, itype});
+      }
 
       f[i][0] += res.f[0];
       f[i][1] += res.f[1];
@@ -136,8 +148,202 @@ void PairPeridemContact::compute(int eflag, int vflag)
                      -dz);
     }
   }
-  dissipated += dissipated_now;
+  // the forces of a run's setup are computed again in its first step: count
+  // the dissipation of steps only (a restart in mid-contact adds nothing)
+  if (!update->setupflag) dissipated += dissipated_now;
+  // global virial as sum f . r of the node pairs (newton on); the centroid
+  // dashpots below tally their own, from the unwrapped centres
+  if (vflag_fdotr) virial_fdotr_compute();
+  if (centroid_on) compute_centroid_damping();
   pvector[0] = dissipated;
+}
+
+/* ----------------------------------------------------------------------
+   damping centroid, PeriDEM seed §2.3.2: for every pair of grains p, p'
+   with two nodes closer than R_c (eq. 27: dist(p, p') < R_c)
+     F = -beta_bar max(0, (v_c - v_c') . e_c) e_c   on p,  -F on p'
+   (centroid_damping_force, eq. 26-27), beta_bar from eq. 28 with
+   M_eq = harmonic mean of the grain masses (eq. 29). Eq. 30 gives each
+   node x of p the force density F/|Omega_p|, i.e. the force F V_x/|Omega_p|;
+   we use the mass share F m_x/M_p, the same for a grain of uniform density,
+   so that the dashpot only decelerates the centre (all nodes of the grain
+   get the acceleration F/M_p) and its power is exactly F . (v_c - v_c').
+------------------------------------------------------------------------- */
+
+void PairPeridemContact::compute_centroid_damping()
+{
+  // the grain pairs in contact, from all ranks, sorted and unique (one entry
+  // per grain pair, the smallest type pair), so that every rank and every
+  // rank count applies the same forces in the same order
+  auto same_grains = [](const std::array<tagint, 4> &a, const std::array<tagint, 4> &b) {
+    return a[0] == b[0] && a[1] == b[1];
+  };
+  std::sort(touch_local.begin(), touch_local.end());
+  touch_local.erase(std::unique(touch_local.begin(), touch_local.end(), same_grains),
+                    touch_local.end());
+  const int mine = 4 * (int)touch_local.size();
+  const int total = gather_counts(mine);
+  if (total == 0) return; // no grains in contact anywhere: nothing to do
+  touch_all.resize(total / 4);
+  MPI_Allgatherv(touch_local.empty() ? nullptr : touch_local[0].data(), mine, MPI_LMP_TAGINT,
+                 touch_all[0].data(), counts.data(), displs.data(), MPI_LMP_TAGINT, world);
+  std::sort(touch_all.begin(), touch_all.end());
+  touch_all.erase(std::unique(touch_all.begin(), touch_all.end(), same_grains), touch_all.end());
+
+  // centres of mass and velocities of all grains (eq. 26)
+  sum_grain_centres();
+  const int ngrains = (int)grain_ids.size();
+  grain_force.assign(3 * ngrains, 0.0);
+  const bool tally = (vflag_global || vflag_fdotr) && comm->me == 0;
+  double power = 0.0;
+  for (const auto &t : touch_all) {
+    const int a = grain_index(t[0]), b = grain_index(t[1]);
+    if (a < 0 || b < 0) continue;
+    const double *sa = &grain_sum[7 * a], *sb = &grain_sum[7 * b];
+    if (!(sa[0] > 0.0) || !(sb[0] > 0.0)) continue;
+    double sep[3], vrel[3], fc[3];
+    for (int k = 0; k < 3; k++) {
+      sep[k] = sb[1 + k] / sb[0] - sa[1 + k] / sa[0];  // z_c' - z_c
+      vrel[k] = sa[4 + k] / sa[0] - sb[4 + k] / sb[0]; // v_c - v_c'
+    }
+    domain->minimum_image(sep[0], sep[1], sep[2]);
+    const peridem::ContactParams &p = spec[t[2]][t[3]].params;
+    const double m_eq = peridem::harmonic_mean(sa[0], sb[0]); // eq. 29
+    const double beta =
+        peridem::restitution_damping_coefficient(p.eps_n, p.C, p.kappa_eff, p.Rc, m_eq);
+    power += peridem::centroid_damping_force(sep, vrel, beta, true, fc);
+    for (int k = 0; k < 3; k++) {
+      grain_force[3 * a + k] += fc[k];
+      grain_force[3 * b + k] -= fc[k];
+    }
+    // virial of the pair of centre forces (F on z_c, -F on z_c'), once
+    if (tally) {
+      virial[0] -= fc[0] * sep[0];
+      virial[1] -= fc[1] * sep[1];
+      virial[2] -= fc[2] * sep[2];
+      virial[3] -= fc[0] * sep[1];
+      virial[4] -= fc[0] * sep[2];
+      virial[5] -= fc[1] * sep[2];
+    }
+  }
+  // every rank computed the same grain forces: rank 0 counts their work
+  if (comm->me == 0 && !update->setupflag) dissipated -= power * update->dt;
+
+  // eq. 30: the share m_x/M_p of the force on grain p to each of its nodes
+  double **f = atom->f;
+  const double *rmass = atom->rmass;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int g = grain_of[i];
+    if (g < 0) continue;
+    const double *fg = &grain_force[3 * g];
+    if (fg[0] == 0.0 && fg[1] == 0.0 && fg[2] == 0.0) continue;
+    const double share = rmass[i] / grain_sum[7 * g];
+    f[i][0] += share * fg[0];
+    f[i][1] += share * fg[1];
+    f[i][2] += share * fg[2];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   counts and displs of an MPI_Allgatherv of n items per rank; the total
+------------------------------------------------------------------------- */
+
+int PairPeridemContact::gather_counts(int n)
+{
+  const int nprocs = comm->nprocs;
+  counts.resize(nprocs);
+  displs.resize(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  return total;
+}
+
+/* ----------------------------------------------------------------------
+   grain index of a grain (molecule) ID: a table when the IDs are dense,
+   otherwise a binary search in the sorted list; -1 if unknown
+------------------------------------------------------------------------- */
+
+int PairPeridemContact::grain_index(tagint id) const
+{
+  if (!grain_table.empty())
+    return (id >= 0 && id < (tagint)grain_table.size()) ? grain_table[id] : -1;
+  const auto it = std::lower_bound(grain_ids.begin(), grain_ids.end(), id);
+  return (it != grain_ids.end() && *it == id) ? (int)(it - grain_ids.begin()) : -1;
+}
+
+/* ----------------------------------------------------------------------
+   the list of all grain IDs, gathered from all ranks; rebuilt at each run
+   and when a node of an unknown grain appears (atoms created in a run)
+------------------------------------------------------------------------- */
+
+void PairPeridemContact::build_grain_index()
+{
+  const tagint *molecule = atom->molecule;
+  std::vector<tagint> mine(molecule, molecule + atom->nlocal);
+  std::sort(mine.begin(), mine.end());
+  mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+  const int n = (int)mine.size();
+  grain_ids.resize(gather_counts(n));
+  MPI_Allgatherv(mine.data(), n, MPI_LMP_TAGINT, grain_ids.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+  std::sort(grain_ids.begin(), grain_ids.end());
+  grain_ids.erase(std::unique(grain_ids.begin(), grain_ids.end()), grain_ids.end());
+
+  grain_table.clear();
+  const tagint ngrains = (tagint)grain_ids.size();
+  if (ngrains > 0 && grain_ids.front() >= 0 && grain_ids.back() < 4 * ngrains + 1024) {
+    grain_table.assign(grain_ids.back() + 1, -1);
+    for (tagint g = 0; g < ngrains; g++) grain_table[grain_ids[g]] = (int)g;
+  }
+  grains_stale = false;
+}
+
+/* ----------------------------------------------------------------------
+   grain_sum[7 g .. 7 g + 6] = M_p, M_p z_c, M_p v_c of every grain, summed
+   over the owned nodes of all ranks (positions unwrapped with the image
+   flags, so a grain across a periodic boundary has one centre)
+------------------------------------------------------------------------- */
+
+void PairPeridemContact::sum_grain_centres()
+{
+  const int nlocal = atom->nlocal;
+  for (int attempt = 0; attempt < 2; attempt++) {
+    if (grains_stale) build_grain_index();
+    const int ngrains = (int)grain_ids.size();
+    grain_local.assign(7 * ngrains + 1, 0.0);
+    grain_of.resize(nlocal);
+    double **x = atom->x;
+    double **v = atom->v;
+    const double *rmass = atom->rmass;
+    const tagint *molecule = atom->molecule;
+    const imageint *image = atom->image;
+    for (int i = 0; i < nlocal; i++) {
+      const int g = grain_of[i] = grain_index(molecule[i]);
+      if (g < 0) {
+        grain_local[7 * ngrains] += 1.0; // a grain created since the last build
+        continue;
+      }
+      double xu[3];
+      domain->unmap(x[i], image[i], xu);
+      double *s = &grain_local[7 * g];
+      const double m = rmass[i];
+      s[0] += m;
+      for (int k = 0; k < 3; k++) {
+        s[1 + k] += m * xu[k];
+        s[4 + k] += m * v[i][k];
+      }
+    }
+    grain_sum.resize(grain_local.size());
+    MPI_Allreduce(grain_local.data(), grain_sum.data(), (int)grain_local.size(), MPI_DOUBLE,
+                  MPI_SUM, world);
+    if (grain_sum[7 * ngrains] == 0.0) return;
+    grains_stale = true; // all ranks see the same sum and rebuild together
+  }
+  error->all(FLERR, "{}: internal error: grain list incomplete after rebuild", STYLE);
 }
 
 /* ----------------------------------------------------------------------
@@ -192,7 +398,7 @@ void PairPeridemContact::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
   const PERIDEM::ContactSpec s =
-      PERIDEM::parse_contact(lmp, "pair_coeff", narg - 2, &arg[2], domain->dimension);
+      PERIDEM::parse_contact(lmp, "pair_coeff", narg - 2, &arg[2], domain->dimension, true);
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = std::max(jlo, i); j <= jhi; j++) {
@@ -219,7 +425,8 @@ void PairPeridemContact::mix(int i, int j)
   const PERIDEM::ContactSpec &a = spec[i][i], &b = spec[j][j];
   PERIDEM::ContactSpec m = a;
   peridem::ContactParams &p = m.params;
-  if (a.params.damping != b.params.damping || a.params.friction != b.params.friction)
+  if (a.params.damping != b.params.damping || a.params.friction != b.params.friction ||
+      a.centroid != b.centroid)
     error->all(FLERR,
                "{}: types {} and {} use different damping or friction laws: give pair_coeff {} "
                "{} explicitly",
@@ -273,11 +480,17 @@ void PairPeridemContact::init_style()
                "that may touch (use special_bonds lj/coul 0.0 1.0 1.0)",
                STYLE);
   bool dissipative = false;
+  centroid_on = 0;
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++)
+    for (int j = i; j <= atom->ntypes; j++) {
       if (setflag[i][j] && (spec[i][j].params.damping != peridem::ContactDamping::None ||
                             spec[i][j].params.friction != peridem::ContactFriction::None))
         dissipative = true;
+      // unset unlike pairs are mixed later only from two centroid types
+      if (setflag[i][j] && spec[i][j].centroid) centroid_on = 1;
+    }
+  // the grains (molecule IDs) may have changed since the last run
+  grains_stale = true;
   if (dissipative && !comm->ghost_velocity)
     error->all(FLERR, "{} with damping or friction needs ghost velocities: use comm_modify vel yes",
                STYLE);
@@ -350,8 +563,8 @@ void PairPeridemContact::write_restart(FILE *fp)
       if (!setflag[i][j]) continue;
       const PERIDEM::ContactSpec &s = spec[i][j];
       fwrite(&s.params, sizeof(peridem::ContactParams), 1, fp);
-      const double extra[3] = {s.bulk_modulus, s.horizon, s.density};
-      fwrite(extra, sizeof(double), 3, fp);
+      const double extra[4] = {s.bulk_modulus, s.horizon, s.density, s.centroid ? 1.0 : 0.0};
+      fwrite(extra, sizeof(double), 4, fp);
     }
 }
 
@@ -365,16 +578,17 @@ void PairPeridemContact::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
       PERIDEM::ContactSpec &s = spec[i][j];
-      double extra[3];
+      double extra[4];
       if (comm->me == 0) {
         utils::sfread(FLERR, &s.params, sizeof(peridem::ContactParams), 1, fp, nullptr, error);
-        utils::sfread(FLERR, extra, sizeof(double), 3, fp, nullptr, error);
+        utils::sfread(FLERR, extra, sizeof(double), 4, fp, nullptr, error);
       }
       MPI_Bcast(&s.params, sizeof(peridem::ContactParams), MPI_BYTE, 0, world);
-      MPI_Bcast(extra, 3, MPI_DOUBLE, 0, world);
+      MPI_Bcast(extra, 4, MPI_DOUBLE, 0, world);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
       s.density = extra[2];
+      s.centroid = extra[3] != 0.0;
       s.origin = "restart file";
       spec[j][i] = s;
     }
@@ -411,5 +625,8 @@ void *PairPeridemContact::extract(const char *str, int &dim)
 
 double PairPeridemContact::memory_usage()
 {
-  return Pair::memory_usage() + spec.size() * spec.size() * sizeof(PERIDEM::ContactSpec);
+  return Pair::memory_usage() + spec.size() * spec.size() * sizeof(PERIDEM::ContactSpec) +
+         (grain_local.capacity() + grain_sum.capacity() + grain_force.capacity()) * sizeof(double) +
+         (grain_table.capacity() + grain_of.capacity()) * sizeof(int) +
+         grain_ids.capacity() * sizeof(tagint);
 }

@@ -16,6 +16,7 @@ PairStyle(peridem/contact,PairPeridemContact);
 #include "lmp_peridem_contact.h"
 #include "pair.h"
 
+#include <array>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -47,6 +48,31 @@ class PairPeridemContact : public Pair {
   void allocate();
   void mix(int i, int j);
   void report_time_step();
+
+  // ---- damping centroid (PeriDEM seed §2.3.2, eq. 26-30) ----
+  // Grains are molecule IDs. The pair loop records the grain pairs with a
+  // node pair closer than R_c; they are gathered from all ranks (one
+  // MPI_Allgather of a count per step, MPI_Allgatherv when there are any).
+  // Only then each rank sums m, m x (unwrapped) and m v of its owned nodes
+  // per grain and one MPI_Allreduce gives every rank all centres. Each rank
+  // applies the dashpot of every grain pair to its own nodes.
+  int centroid_on;                 // some type pair uses damping centroid
+  std::vector<tagint> grain_ids;   // sorted IDs of all grains
+  std::vector<int> grain_table;    // ID -> index when the IDs are dense
+  bool grains_stale;               // rebuild grain_ids before the next use
+  std::vector<int> grain_of;       // grain index of each owned node
+  std::vector<double> grain_local; // per grain m, m x, m v (7), + unknown IDs
+  std::vector<double> grain_sum;   // the same summed over ranks
+  std::vector<double> grain_force; // damping force on each grain (3)
+  // grain pairs in contact: grain IDs (smaller first) and the node types
+  std::vector<std::array<tagint, 4>> touch_local, touch_all;
+  std::vector<int> counts, displs; // for MPI_Allgatherv
+
+  int gather_counts(int n);         // counts, displs for MPI_Allgatherv; total
+  int grain_index(tagint id) const; // -1 if unknown
+  void build_grain_index();
+  void sum_grain_centres();
+  void compute_centroid_damping();
 };
 
 } // namespace LAMMPS_NS

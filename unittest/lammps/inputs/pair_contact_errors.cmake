@@ -1,0 +1,45 @@
+# pair_style peridem/contact: bad input ends the run with a clear error
+# (Rc > horizon is a documented warning, doc/pair_peridem_contact.rst)
+
+function(peridem_contact_error name regex)
+  peridem_add_error_test(contact_${name} ${_in}/pair_contact_error.in "${regex}" ${ARGN})
+endfunction()
+set(_ok "Kn 1 Rc 0.2")
+peridem_contact_error(rc_zero "pair_coeff: Rc \\(contact radius\\) must be > 0, not 0"
+  -var coeff "* * Kn 1 Rc 0")
+peridem_contact_error(rc_negative "pair_coeff: Rc \\(contact radius\\) must be > 0, not -0.1"
+  -var coeff "* * Kn 1 Rc -0.1")
+peridem_contact_error(rc_factor_zero "pair_coeff: Rc_factor .* must be > 0, not 0"
+  -var coeff "* * Kn 1 Rc_factor 0 spacing 0.1")
+peridem_contact_error(mu_negative "pair_coeff: friction coefficient mu must be >= 0, not -0.3"
+  -var coeff "* * ${_ok} friction coulomb -0.3")
+peridem_contact_error(mu_negative_regularized "friction coefficient mu must be >= 0, not -1e-3"
+  -var coeff "* * ${_ok} friction regularized -1e-3")
+peridem_contact_error(rd_above "pair_coeff: damping ratio r_d must lie in \\[0, 1\\], not 1.5"
+  -var coeff "* * ${_ok} damping nodal 1.5")
+peridem_contact_error(rd_below "pair_coeff: damping ratio r_d must lie in \\[0, 1\\], not -0.1"
+  -var coeff "* * ${_ok} damping nodal -0.1")
+peridem_contact_error(no_volumes
+  "pair_style peridem/contact requires atom style peridem \\(per-atom volume"
+  -var atomstyle bond -var coeff "* * ${_ok}")
+peridem_contact_error(damping_needs_vel "needs ghost velocities: use comm_modify vel yes"
+  -var vel no -var coeff "* * ${_ok} damping nodal 0.5")
+peridem_contact_error(friction_needs_vel "needs ghost velocities: use comm_modify vel yes"
+  -var vel no -var coeff "* * ${_ok} friction regularized 0.5")
+peridem_contact_error(special_12 "requires special_bonds lj 0.0 for 1-2 pairs"
+  -var special "lj/coul 1.0 1.0 1.0" -var coeff "* * ${_ok}")
+peridem_contact_error(special_13 "requires special_bonds lj weights 1.0 for 1-3 and 1-4 pairs"
+  -var special "lj/coul 0.0 0.0 1.0" -var coeff "* * ${_ok}")
+peridem_contact_error(self_value "pair_style peridem/contact: self must be yes or no, not maybe"
+  -var settings "self maybe" -var coeff "* * ${_ok}")
+peridem_contact_error(unknown_keyword "pair_coeff: unknown keyword stiffness"
+  -var coeff "* * ${_ok} stiffness 3")
+peridem_contact_error(mix_laws "types 1 and 2 use different damping or friction laws"
+  -var coeff "1 1 ${_ok} damping nodal 0.5" -var extra "pair_coeff 2 2 ${_ok} friction coulomb 0.5")
+
+# Rc larger than the horizon: a warning naming both values, the run goes on
+add_test(NAME contact_rc_above_horizon_warns
+  COMMAND lmp_peridem -in ${_in}/pair_contact_error.in -log none -var coeff "* * Kn 1 Rc 0.5 horizon 0.3")
+set_tests_properties(contact_rc_above_horizon_warns PROPERTIES
+  PASS_REGULAR_EXPRESSION "WARNING: pair_coeff: contact radius Rc = 0.5 is larger than the horizon 0.3"
+  FAIL_REGULAR_EXPRESSION "ERROR")

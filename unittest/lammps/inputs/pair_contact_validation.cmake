@@ -1,0 +1,58 @@
+# pair_style peridem/contact (issue 5): friction, self-contact, bonded pairs
+
+set(_fric ${PROJECT_SOURCE_DIR}/examples/contact-friction)
+set(_self ${PROJECT_SOURCE_DIR}/examples/contact-self)
+
+# (1a) a square grain on a fixed slab, gravity tilted to theta (ramped in):
+# stuck for tan(theta)/mu = 0.8, 0.95, sliding for 1.05, 1.25 (mu = 0.5),
+# with the regularized law (seed eq. 4.3) and plain Coulomb ([JDBL] eq. 19-20)
+foreach(_law regularized coulomb)
+  foreach(_case "0.8;21.8014;stick" "0.95;25.4077;stick" "1.05;27.6995;slide" "1.25;32.0054;slide")
+    list(GET _case 0 _ratio)
+    list(GET _case 1 _theta)
+    list(GET _case 2 _expect)
+    add_test(NAME contact_incline_${_law}_${_ratio}
+      COMMAND lmp_peridem -in ${_in}/contact_incline_check.in -log none -echo none
+              -var law ${_law} -var theta ${_theta} -var expect ${_expect}
+      WORKING_DIRECTORY ${_fric})
+    set_tests_properties(contact_incline_${_law}_${_ratio} PROPERTIES
+      PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
+  endforeach()
+endforeach()
+
+# (1b) friction sign: a block pushed along the slab decelerates and stops;
+# mechanical energy never increases, the dissipated energy never decreases
+# and accounts for the loss to 5%
+foreach(_law regularized coulomb)
+  add_test(NAME contact_friction_sign_${_law}
+    COMMAND lmp_peridem -in ${_in}/contact_slide_check.in -log none -echo none
+            -var law ${_law} -var theta 0 -var v0 0.5 -var ramp_steps 1 -var tilt_steps 1
+    WORKING_DIRECTORY ${_fric})
+  set_tests_properties(contact_friction_sign_${_law} PROPERTIES
+    PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
+endforeach()
+
+# (1c) the sliding block (theta 35 degrees): same thermo on 1 and 2 ranks
+peridem_add_example_test(contact_friction contact-friction in.incline 1 2)
+
+# (2) self-contact: the halves of a cut grain bounce off each other; the
+# arms of a crushed X-shaped grain do not interpenetrate; a grain torn apart
+# during the run (1 and 2 ranks) keeps its pieces apart. fix halt ends the
+# run with an error when nodes of two pieces come closer than Rc/2 ...
+peridem_add_example_test(contact_cut_pieces contact-self in.cut_pieces 1)
+peridem_add_example_test(contact_plus_crush contact-self in.plus_crush 1)
+peridem_add_example_test(contact_break_apart contact-self in.break_apart 1 2)
+# ... which happens with "pair_style peridem/contact self no": the checks can fail
+foreach(_input cut_pieces plus_crush break_apart)
+  add_test(NAME contact_${_input}_without_self_contact_fails
+    COMMAND ${PERIDEM_RUN}/expect_error.sh "Fix halt condition for fix-id apart met"
+            $<TARGET_FILE:lmp_peridem> -in in.${_input} -var self no -log none -echo none
+    WORKING_DIRECTORY ${_self})
+endforeach()
+
+# intact bond: no contact; bond deleted: self-contact law; other grain: eq. 4.1
+add_test(NAME contact_bonded_pair
+  COMMAND lmp_peridem -in ${_in}/contact_bonded_pair.in -log none -echo none
+          -var data ${_in}/two_nodes.data)
+set_tests_properties(contact_bonded_pair PROPERTIES
+  PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")

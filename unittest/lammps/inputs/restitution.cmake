@@ -1,0 +1,40 @@
+# damping centroid (pair_style peridem/contact, PeriDEM seed §2.3.2) and the
+# coefficient-of-restitution study of the seed's §4.1 (Table 2)
+
+# the two-disk bounce with centroid damping: same thermo output on 1 and 2
+# ranks (both disks straddle the rank boundary at x = 0)
+peridem_add_example_test(restitution restitution in.restitution 1 2)
+
+# the restitution study at the seed's resolution (h = 0.1423 mm, 5 runs of
+# about 2 s): C_R(1) within 1% of 1, C_R decreasing with eps_n, values
+# within 0.01 of the recorded ones and not below the seed's (see
+# examples/restitution/README.md)
+add_test(NAME restitution_trend
+  COMMAND python3 ${PROJECT_SOURCE_DIR}/examples/restitution/run_restitution.py
+          --lmp $<TARGET_FILE:lmp_peridem> --potentials ${PROJECT_SOURCE_DIR}/potentials
+          --out ${CMAKE_CURRENT_BINARY_DIR}/restitution --check)
+set_tests_properties(restitution_trend PROPERTIES PASS_REGULAR_EXPRESSION "PERIDEM-PASS"
+  FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL" TIMEOUT 300)
+
+# a restart in the middle of the contact continues the bounce and the
+# dissipated energy exactly (1 and 2 ranks)
+foreach(_np 1 2)
+  add_test(NAME restitution_restart_np${_np}
+    COMMAND ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${_in}/restitution_restart.in -log none -echo none
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(restitution_restart_np${_np} PROPERTIES
+    PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL")
+endforeach()
+
+# bad input
+peridem_add_error_test(centroid_eps_range ${PROJECT_SOURCE_DIR}/examples/restitution/in.restitution
+  "pair_coeff: centroid eps_n must lie in \\(0, 1\\], not 0"
+  -var eps_n 0 -var potentials ${PROJECT_SOURCE_DIR}/potentials)
+peridem_add_error_test(centroid_C_zero ${PROJECT_SOURCE_DIR}/examples/restitution/in.restitution
+  "pair_coeff: centroid constant C must be > 0, not 0"
+  -var eps_n 0.9 -var C 0 -var potentials ${PROJECT_SOURCE_DIR}/potentials)
+peridem_add_error_test(centroid_in_wall ${_in}/wall_error.in
+  "fix peridem/wall: damping centroid acts between grains and is available in pair_coeff"
+  -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 1 damping centroid 0.9 100" -var nsteps 0)
