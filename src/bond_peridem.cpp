@@ -460,6 +460,17 @@ void BondPeridem::init_style()
     max_reach = std::max(max_reach, horizon[i]);
   }
 
+  // Sort atoms in space as LAMMPS does with a pair style (bins of half the
+  // neighbour cutoff): without one LAMMPS does not sort, and the bond loop
+  // then reads partners scattered in memory (2 ranks: 1.6x slower on the
+  // in.peri.pmb impact, from cache misses, not from more work).
+  if (!force->pair && atom->sortfreq > 0 && atom->userbinsize <= 0.0) {
+    atom->userbinsize = 0.5 * max_reach;
+    if (comm->me == 0)
+      utils::logmesg(lmp, "{}: sorting atoms in bins of {:.8g} (half the largest horizon)\n", STYLE,
+                     atom->userbinsize);
+  }
+
   // ghost atoms must cover every bond partner, whatever the pair cutoff;
   // 1.5 x the longest bond is LAMMPS's own estimate (Comm::get_comm_cutoff)
   const double needed = 1.5 * max_reach + neighbor->skin;

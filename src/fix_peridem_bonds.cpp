@@ -65,13 +65,13 @@ void FixPeridemBonds::clear_ghosts()
 
 void FixPeridemBonds::collect()
 {
-  comm_mode = COUNTS;
-  comm->reverse_comm_fix(this);
-  clear_ghosts();
   bigint all = 0;
   MPI_Allreduce(&broken_here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   broken_here = 0;
-  if (all == 0) return;
+  if (all == 0) return; // nothing to send home: ghost entries are still zero
+  comm_mode = COUNTS;
+  comm->reverse_comm_fix(this);
+  clear_ghosts();
   // every broken bond was counted once (see bond_broken): keep the global
   // bond count of write_data and thermo right
   atom->nbonds -= all;
