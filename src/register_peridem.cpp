@@ -69,8 +69,9 @@ void insert_styles(LAMMPS *lmp)
 }
 
 const char *const style_names[] = {
-    "atom_style peridem", "bond_style peridem", "pair_style peridem/contact",    "compute peridem/damage", "fix peridem/bonds",
-    "fix peridem/wall",   "create_peridem_grains", "cut_peridem_bonds",      nullptr};
+    "atom_style peridem",     "bond_style peridem", "pair_style peridem/contact",
+    "compute peridem/damage", "fix peridem/bonds",  "fix peridem/wall",
+    "create_peridem_grains",  "cut_peridem_bonds",  nullptr};
 
 } // namespace
 

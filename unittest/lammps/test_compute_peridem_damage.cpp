@@ -74,7 +74,8 @@ void check_damage(LAMMPS *lmp, const char *what)
   for (const auto &[tag, expected] : partners) {
     const int i = lmp->atom->map(tag);
     if (i < 0 || i >= lmp->atom->nlocal) continue;
-    std::vector<tagint> got(lmp->atom->special[i], lmp->atom->special[i] + lmp->atom->nspecial[i][0]);
+    std::vector<tagint> got(lmp->atom->special[i],
+                            lmp->atom->special[i] + lmp->atom->nspecial[i][0]);
     std::sort(got.begin(), got.end());
     EXPECT_EQ(got, expected) << what << ": 1-2 special list of atom " << tag;
   }
