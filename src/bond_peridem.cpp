@@ -20,6 +20,7 @@
 #include "update.h"
 
 #include "lmp_peridem_material.h"
+#include "lmp_peridem_parse.h"
 
 #include <cmath>
 #include <cstring>
@@ -236,38 +237,18 @@ void BondPeridem::settings(int narg, char **arg)
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
     const std::string value = arg[iarg + 1];
     if (key == "break") {
-      if (value == "tension") {
-        break_flag = 1;
-        breakage = peridem::BreakageMode::Tension;
-      } else if (value == "absolute") {
-        break_flag = 1;
+      const int mode = PERIDEM::choice(lmp, STYLE, key, value, {"tension", "absolute", "off"});
+      break_flag = mode != 2;
+      if (mode == 1)
         breakage = peridem::BreakageMode::Absolute;
-      } else if (value == "off") {
-        break_flag = 0;
-      } else
-        error->all(FLERR, "{}: break must be tension, absolute or off, not {}", STYLE, value);
+      else
+        breakage = peridem::BreakageMode::Tension;
     } else if (key == "break_order") {
-      if (value == "before_force")
-        break_after_force = 0;
-      else if (value == "after_force")
-        break_after_force = 1;
-      else
-        error->all(FLERR, "{}: break_order must be before_force or after_force, not {}", STYLE,
-                   value);
+      break_after_force = PERIDEM::choice(lmp, STYLE, key, value, {"before_force", "after_force"});
     } else if (key == "volume_correction") {
-      if (value == "none")
-        volume_correction = 0;
-      else if (value == "linear")
-        volume_correction = 1;
-      else
-        error->all(FLERR, "{}: volume_correction must be none or linear, not {}", STYLE, value);
+      volume_correction = PERIDEM::choice(lmp, STYLE, key, value, {"none", "linear"});
     } else if (key == "cohesive") {
-      if (value == "yes")
-        cohesive = 1;
-      else if (value == "no")
-        cohesive = 0;
-      else
-        error->all(FLERR, "{}: cohesive must be yes or no, not {}", STYLE, value);
+      cohesive = PERIDEM::yes_no(lmp, STYLE, key, value);
     } else
       error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
   }

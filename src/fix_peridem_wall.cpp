@@ -9,6 +9,8 @@
 
 #include "fix_peridem_wall.h"
 
+#include "lmp_peridem_parse.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -140,13 +142,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       iarg += 5;
     } else if (key == "lost") {
       need(1, "lost");
-      const std::string v = arg[iarg + 1];
-      if (v == "error")
-        lost_error = 1;
-      else if (v == "warn")
-        lost_error = 0;
-      else
-        error->all(FLERR, "{}: lost must be error or warn, not {}", STYLE, v);
+      lost_error = PERIDEM::choice(lmp, STYLE, "lost", arg[iarg + 1], {"warn", "error"});
       iarg += 2;
     } else {
       const int used = parser.consume(narg, arg, iarg);

@@ -25,6 +25,7 @@
 #include "update.h"
 
 #include "lmp_peridem_compat.h"
+#include "lmp_peridem_parse.h"
 
 #include <algorithm>
 #include <cmath>
@@ -357,12 +358,7 @@ void PairPeridemContact::settings(int narg, char **arg)
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
     const std::string value = arg[iarg + 1];
     if (key == "self") {
-      if (value == "yes")
-        self_contact = 1;
-      else if (value == "no")
-        self_contact = 0;
-      else
-        error->all(FLERR, "{}: self must be yes or no, not {}", STYLE, value);
+      self_contact = PERIDEM::yes_no(lmp, STYLE, key, value);
     } else
       error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
   }

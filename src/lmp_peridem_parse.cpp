@@ -1,0 +1,35 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: small helpers for parsing style arguments.
+------------------------------------------------------------------------- */
+
+#include "lmp_peridem_parse.h"
+
+#include "error.h"
+#include "lammps.h"
+
+using namespace LAMMPS_NS;
+
+namespace PERIDEM {
+
+int choice(LAMMPS *lmp, const std::string &command, const std::string &keyword,
+           const std::string &value, std::initializer_list<const char *> options)
+{
+  int index = 0;
+  std::string listed;
+  for (const char *option : options) {
+    if (value == option) return index;
+    listed += (index == 0 ? "" : (index + 1 == int(options.size()) ? " or " : ", "));
+    listed += option;
+    index++;
+  }
+  lmp->error->all(FLERR, "{}: {} must be {}, not {}", command, keyword, listed, value);
+  return -1;
+}
+
+int yes_no(LAMMPS *lmp, const std::string &command, const std::string &keyword,
+           const std::string &value)
+{
+  return choice(lmp, command, keyword, value, {"yes", "no"}) == 0 ? 1 : 0;
+}
+
+} // namespace PERIDEM

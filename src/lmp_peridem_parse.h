@@ -1,0 +1,28 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: small helpers for parsing style arguments.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_PERIDEM_PARSE_H
+#define LMP_PERIDEM_PARSE_H
+
+#include <initializer_list>
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace PERIDEM {
+
+// The position of `value` among `options` (e.g. {"no", "yes"}); otherwise a
+// LAMMPS error "<command>: <keyword> must be a, b or c, not <value>".
+int choice(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
+           const std::string &value, std::initializer_list<const char *> options);
+
+// 1 for "yes", 0 for "no"; otherwise "<command>: <keyword> must be yes or no, not ...".
+int yes_no(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
+           const std::string &value);
+
+} // namespace PERIDEM
+
+#endif
