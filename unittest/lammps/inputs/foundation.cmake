@@ -35,3 +35,21 @@ set_tests_properties(preload.clear_keeps_styles PROPERTIES
   ENVIRONMENT "LD_PRELOAD=$<TARGET_FILE:peridem>")
 set_tests_properties(driver.clear_keeps_styles preload.clear_keeps_styles PROPERTIES
   PASS_REGULAR_EXPRESSION "PERIDEM-ROUTE-OK after clear" FAIL_REGULAR_EXPRESSION "ERROR")
+
+# configuration stops with a clear message when the LAMMPS headers are
+# missing or belong to another LAMMPS version
+add_test(NAME configure.missing_lammps_headers
+  COMMAND ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR} -B ${CMAKE_CURRENT_BINARY_DIR}/configure_missing
+          -DPERIDEM_BUILD_TESTS=OFF -DPERIDEM_LAMMPS_SRC=${CMAKE_CURRENT_BINARY_DIR}/no_such_dir)
+set_tests_properties(configure.missing_lammps_headers PROPERTIES
+  PASS_REGULAR_EXPRESSION "no_such_dir' has no[ \n]+fmt/format.h")
+set(_fake ${CMAKE_CURRENT_BINARY_DIR}/fake_lammps_src)
+foreach(_h fmt/format.h atom_vec.h neigh_request.h math_const.h pointers.h)
+  file(WRITE ${_fake}/${_h} "")
+endforeach()
+file(WRITE ${_fake}/version.h "#define LAMMPS_VERSION \"1 Jan 2000\"\n")
+add_test(NAME configure.other_lammps_version
+  COMMAND ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR} -B ${CMAKE_CURRENT_BINARY_DIR}/configure_other
+          -DPERIDEM_BUILD_TESTS=OFF -DPERIDEM_LAMMPS_SRC=${_fake})
+set_tests_properties(configure.other_lammps_version PROPERTIES
+  PASS_REGULAR_EXPRESSION "version 20000101 but the installed LAMMPS library is 20210929")
