@@ -10,6 +10,8 @@
 #include "fix_peridem_wall.h"
 
 #include "lmp_peridem_parse.h"
+#include "force.h"
+#include "pair_peridem_contact.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -140,6 +142,12 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       if (domain->dimension == 2 && walls[w].shear[2] != 0.0)
         error->all(FLERR, "{}: shear velocity of wall {} has a z component in 2D", STYLE, FACES[w]);
       iarg += 5;
+    } else if (key == "contact") {
+      need(1, "contact");
+      if (strcmp(arg[iarg + 1], "pair") != 0)
+        error->all(FLERR, "{}: contact must be followed by pair, not {}", STYLE, arg[iarg + 1]);
+      contact_from_pair = true;
+      iarg += 2;
     } else if (key == "lost") {
       need(1, "lost");
       lost_error = PERIDEM::choice(lmp, STYLE, "lost", arg[iarg + 1], {"warn", "error"});
@@ -162,11 +170,18 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
                  FACES[w]);
   }
   if (nactive == 0) error->all(FLERR, "{}: no wall given (xlo xhi ylo yhi zlo zhi)", STYLE);
-  contact = parser.finish(domain->dimension);
+  if (contact_from_pair) {
+    if (parser.any())
+      error->all(FLERR,
+                 "{}: contact pair takes the contact law from pair_style peridem/contact: "
+                 "give no contact keywords",
+                 STYLE);
+  } else {
+    contact = parser.finish(domain->dimension);
+    if (comm->me == 0)
+      utils::logmesg(lmp, "{} {}: {}\n", STYLE, id, PERIDEM::describe_contact(contact));
+  }
   check_order("as given");
-
-  if (comm->me == 0)
-    utils::logmesg(lmp, "{} {}: {}\n", STYLE, id, PERIDEM::describe_contact(contact));
 }
 
 FixPeridemWall::~FixPeridemWall()
@@ -198,6 +213,25 @@ int FixPeridemWall::parse_face(const char *word) const
 }
 
 /* ----------------------------------------------------------------------
+   'contact pair': each node meets the walls with the law of pair_coeff I I
+   of its type I (repulsion, nodal or restitution damping, friction;
+   damping between grain centres does not act on walls)
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::take_contact_from_pair()
+{
+  auto *pair = dynamic_cast<PairPeridemContact *>(force->pair_match("peridem/contact", 1));
+  if (!pair) error->all(FLERR, "{}: contact pair needs pair_style peridem/contact", STYLE);
+  type_params.assign(atom->ntypes + 1, peridem::ContactParams());
+  for (int t = 1; t <= atom->ntypes; t++) {
+    if (!pair->type_set(t, t))
+      error->all(FLERR, "{}: contact pair needs pair_coeff {} {} of pair_style peridem/contact",
+                 STYLE, t, t);
+    type_params[t] = pair->type_spec(t, t).params;
+  }
+}
+
+/* ----------------------------------------------------------------------
    a wall must stay below (lo) or above (hi) its opposite wall
 ------------------------------------------------------------------------- */
 
@@ -216,6 +250,7 @@ void FixPeridemWall::check_order(const char *when) const
 
 void FixPeridemWall::init()
 {
+  if (contact_from_pair) take_contact_from_pair();
   for (int w = 0; w < nwalls; w++) {
     Wall &wall = walls[w];
     if (wall.motion != Motion::Variable) continue;
@@ -323,8 +358,7 @@ void FixPeridemWall::post_force(int vflag)
   v_init(vflag);
   update_variable_walls();
   const peridem::WallBox box = make_box();
-  const peridem::ContactParams &params = contact.params;
-  const double Rc = params.Rc;
+  const int *type = atom->type;
 
   peridem::WallContactInput in;
   for (int w = 0; w < nwalls; w++) {
@@ -345,6 +379,9 @@ void FixPeridemWall::post_force(int vflag)
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
+    const peridem::ContactParams &params =
+        contact_from_pair ? type_params[type[i]] : contact.params;
+    const double Rc = params.Rc;
     int wmin = -1;
     double dmin = Rc;
     for (int w = 0; w < nwalls; w++) {

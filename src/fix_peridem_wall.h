@@ -20,6 +20,8 @@ FixStyle(peridem/wall,FixPeridemWall);
 
 #include "fix.h"
 #include "lmp_peridem_contact.h"
+
+#include <vector>
 #include "peridem_wall_geometry.h"
 
 #include <string>
@@ -62,6 +64,10 @@ class FixPeridemWall : public Fix {
   Wall walls[peridem::kMaxWalls];
   int nwalls; // 2 * dimension
   PERIDEM::ContactSpec contact;
+  // 'contact pair': the law of pair_style peridem/contact for the node's
+  // type (pair_coeff I I), per atom type; empty otherwise
+  bool contact_from_pair = false;
+  std::vector<peridem::ContactParams> type_params;
   int lost_error; // 1: a node beyond a wall ends the run, 0: counted and warned
   int servo_any, var_any;
   int in_setup;
@@ -78,6 +84,7 @@ class FixPeridemWall : public Fix {
   peridem::WallBox make_box() const;
   double wall_area(int w) const;
   void check_order(const char *when) const;
+  void take_contact_from_pair();
   void update_variable_walls();
   void reduce();
   void servo_control();

@@ -52,6 +52,13 @@ double ContactParser::positive(int narg, char **arg, int iarg, const char *what)
 
 int ContactParser::consume(int narg, char **arg, int iarg)
 {
+  const int used = consume_one(narg, arg, iarg);
+  if (used > 0) consumed++;
+  return used;
+}
+
+int ContactParser::consume_one(int narg, char **arg, int iarg)
+{
   const std::string key = arg[iarg];
   peridem::ContactParams &p = spec.params;
   if (key == "material") {

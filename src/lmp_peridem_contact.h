@@ -68,15 +68,20 @@ class ContactParser {
   // per-grain centres; a wall fix leaves it off and gets an error).
   void allow_centroid(bool yes) { centroid_allowed = yes; }
 
+  // whether consume() has read any contact keyword
+  bool any() const { return consumed > 0; }
+
  private:
   LAMMPS_NS::LAMMPS *lmp;
   std::string command;
   ContactSpec spec;
   bool have_material = false, have_kn = false, have_rc = false, have_factor = false;
   bool centroid_allowed = false;
+  int consumed = 0;
   double material_k = 0.0, material_horizon = 0.0, material_E = 0.0;
   double horizon = 0.0, rc_factor = 0.0, spacing = 0.0;
 
+  int consume_one(int narg, char **arg, int iarg);
   // arg[iarg] as a number (error if missing), and as a number > 0
   double number(int narg, char **arg, int iarg, const char *what) const;
   double positive(int narg, char **arg, int iarg, const char *what) const;

@@ -36,6 +36,10 @@ class PairPeridemContact : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+
+  // the contact law of a type pair (after pair_coeff), e.g. for walls
+  const PERIDEM::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
+  bool type_set(int i, int j) const { return allocated && setflag[i][j]; }
   double memory_usage() override;
 
  protected:

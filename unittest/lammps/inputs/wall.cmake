@@ -54,3 +54,13 @@ add_test(NAME wall_rc_above_horizon_warns
 set_tests_properties(wall_rc_above_horizon_warns PROPERTIES
   PASS_REGULAR_EXPRESSION "WARNING: fix peridem/wall: contact radius Rc = 0.5 is larger than the horizon 0.3"
   FAIL_REGULAR_EXPRESSION "ERROR")
+
+# 'contact pair': the wall takes the pair style's contact law, with the same
+# result as the keywords written out
+add_test(NAME wall_contact_from_pair
+  COMMAND sh -c "$<TARGET_FILE:lmp_peridem> -in ${_in}/wall_contact_pair.in -var mode own -log own.log -screen none && $<TARGET_FILE:lmp_peridem> -in ${_in}/wall_contact_pair.in -var mode pair -log pair.log -screen none && grep -q 'f_box\\[15\\]' pair.log && python3 ${PERIDEM_RUN}/thermo_compare.py own.log pair.log --rtol 0"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+peridem_wall_error(contact_pair_without_pair "ylo 0.0 contact pair"
+  "fix peridem/wall: contact pair needs pair_style peridem/contact")
+peridem_wall_error(contact_pair_and_keywords "ylo 0.0 contact pair Kn 1 Rc 0.5"
+  "contact pair takes the contact law from pair_style peridem/contact: give no contact keywords")
