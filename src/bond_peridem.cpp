@@ -37,8 +37,8 @@ const char *const COEFF = "bond_coeff";
 BondPeridem::BondPeridem(LAMMPS *lmp)
     : Bond(lmp), c(nullptr), s0(nullptr), horizon(nullptr), spacing(nullptr), conic(nullptr),
       breakage(peridem::BreakageMode::Tension), break_flag(1), break_after_force(0),
-      volume_correction(0), cohesive(0), validate_next(1), nbroken(0), bonds_fix(nullptr),
-      cache_ncalls(-1), cache_bondlist(nullptr)
+      volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr), cache_ncalls(-1),
+      cache_bondlist(nullptr)
 {
   writedata = 1;
 }
@@ -189,7 +189,6 @@ void BondPeridem::break_bond(int n, int i1, int i2, double r0, double s0type)
   const double z =
       peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]), r0, s0type);
   bonds_fix->bond_broken(i1, i2, z);
-  nbroken++;
 }
 
 /* ----------------------------------------------------------------------
@@ -271,12 +270,10 @@ void BondPeridem::allocate()
     c[i] = s0[i] = horizon[i] = spacing[i] = 0.0;
     conic[i] = 0;
   }
-  params.assign(np1, TypeParams());
 }
 
-void BondPeridem::copy_params(int type)
+void BondPeridem::set_type(int type, const TypeParams &p)
 {
-  const TypeParams &p = params[type];
   c[type] = p.c;
   s0[type] = p.s0;
   horizon[type] = p.horizon;
@@ -402,12 +399,7 @@ void BondPeridem::coeff(int narg, char **arg)
     error->all(FLERR, "{}: {}", COEFF, e.what());
   }
   p.spacing = h;
-  p.origin = origin;
-
-  for (int i = ilo; i <= ihi; i++) {
-    params[i] = p;
-    copy_params(i);
-  }
+  for (int i = ilo; i <= ihi; i++) set_type(i, p);
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "{} type {}: c = {:.10g}, s0 = {:.10g}, horizon = {:.10g}, {} micromodulus, "
@@ -500,16 +492,7 @@ void BondPeridem::read_restart(FILE *fp)
   }
   if (comm->me == 0) utils::sfread(FLERR, &conic[1], sizeof(int), n, fp, nullptr, error);
   MPI_Bcast(&conic[1], n, MPI_INT, 0, world);
-  for (int i = 1; i <= n; i++) {
-    params[i].c = c[i];
-    params[i].s0 = s0[i];
-    params[i].horizon = horizon[i];
-    params[i].spacing = spacing[i];
-    params[i].micromodulus =
-        conic[i] ? peridem::Micromodulus::Conic : peridem::Micromodulus::Constant;
-    params[i].origin = "restart file";
-    setflag[i] = 1;
-  }
+  for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
 void BondPeridem::write_restart_settings(FILE *fp)
@@ -568,7 +551,6 @@ void *BondPeridem::extract(const char *str, int &dim)
   if (strcmp(str, "s0") == 0) return (void *)s0;
   if (strcmp(str, "horizon") == 0) return (void *)horizon;
   dim = 0;
-  if (strcmp(str, "nbroken") == 0) return (void *)&nbroken;
   return nullptr;
 }
 

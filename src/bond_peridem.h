@@ -39,21 +39,16 @@ class BondPeridem : public Bond {
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
-  // number of bonds this rank broke since the start (tests, thermo via extract)
-  bigint nbroken_local() const { return nbroken; }
-
  protected:
-  // per bond type, index 1..nbondtypes
+  // the coefficients of one bond type, as bond_coeff derives them
   struct TypeParams {
     double c = 0.0;       // spring constant c_w (grain-shape seed eq. 3.2, Table 1)
     double s0 = 0.0;      // critical stretch
     double horizon = 0.0; // eps: bonds are no longer than this
     double spacing = 0.0; // node spacing h for the volume correction (0: not given)
     peridem::Micromodulus micromodulus = peridem::Micromodulus::Constant;
-    std::string origin; // what the user gave, for the log
   };
-  std::vector<TypeParams> params;
-  // flat copies for the force loop
+  // per bond type, index 1..nbondtypes (flat arrays for the force loop)
   double *c, *s0, *horizon, *spacing;
   int *conic;
 
@@ -63,7 +58,6 @@ class BondPeridem : public Bond {
   int volume_correction; // 0: none, 1: linear ramp near the horizon
   int cohesive;          // 1: bonds between different grains allowed
   int validate_next;     // check the bond list in the next compute()
-  bigint nbroken;
   class FixPeridemBonds *bonds_fix;
 
   // per entry of LAMMPS's bond list, valid until it is rebuilt
@@ -78,7 +72,7 @@ class BondPeridem : public Bond {
   double bond_stiffness(int type, double r0, int i1, int i2) const;
 
   void allocate();
-  void copy_params(int type);
+  void set_type(int type, const TypeParams &p);
   void validate_bonds();
   void break_bond(int n, int i1, int i2, double r0, double s0type);
   double reference_length(int i1, int i2) const;
