@@ -144,13 +144,15 @@ class FixPeridemWallTest : public LammpsTest {
     std::snprintf(buf, sizeof(buf), "set atom 1 x %.17g\nrun 0 post no", x);
     command(buf);
   }
-  void drop_setup(const std::string &contact)
+  void drop_setup(const std::string &contact, double gravity = 1e4)
   {
     command(grain(0.0, 1.8e-3));
     command("fix wall all peridem/wall ylo 0.0 " + contact +
             " Rc_factor 0.95 spacing 0.15e-3\n"
             "fix_modify wall energy yes\n"
-            "fix grav all gravity 1e4 vector 0 -1 0\n"
+            "fix grav all gravity " +
+            std::to_string(gravity) +
+            " vector 0 -1 0\n"
             "fix_modify grav energy yes\n"
             "run 0 post no");
   }
@@ -172,16 +174,24 @@ TEST_F(FixPeridemWallTest, DropWithoutDampingRebounds)
 }
 
 // The same with M1's own K_n: still conservative, but the stiffer contact shakes the grain
-// and part of the energy stays in its vibration (recorded, not a wall property).
+// and part of the energy stays in its vibration, the more the faster the impact (4.5 % of
+// the drop at 4 m/s, 2.6 % at 1.3 m/s, 1.6 % at 0.4 m/s): not a wall property. At 0.4 m/s
+// (g = 100) the centre of mass comes back within 2 % of its starting height.
 TEST_F(FixPeridemWallTest, DropM1ContactConservesEnergy)
 {
-  drop_setup("material " + POT + " M1");
-  const Bounce b = bounce();
-  std::printf("[ measure  ] undamped drop (M1 K_n): rebound loss %.3f%% of the drop (to grain "
-              "vibration), energy drift %.2e relative\n",
-              100 * (b.y0 - b.peak) / (b.y0 - b.ymin), b.max_drift / b.e0);
-  EXPECT_LT(b.max_drift / b.e0, 1e-5);
-  EXPECT_GT(b.peak, b.y0 - 0.1 * (b.y0 - b.ymin));
+  for (const double g : {1e4, 1e2}) {
+    delete lmp;
+    lmp = make_lammps();
+    drop_setup("material " + POT + " M1", g);
+    const Bounce b = bounce(g > 1e3 ? 40 : 200);
+    const double loss = (b.y0 - b.peak) / (b.y0 - b.ymin);
+    std::printf("[ measure  ] undamped drop (M1 K_n, g = %g): rebound loss %.3f%% of the drop (to "
+                "grain vibration), energy drift %.2e relative\n",
+                g, 100 * loss, b.max_drift / b.e0);
+    EXPECT_LT(b.max_drift / b.e0, 1e-5);
+    EXPECT_LT(loss, g > 1e3 ? 0.1 : 0.02);
+    EXPECT_GT(loss, 0.0); // some energy does go into vibration
+  }
 }
 
 // Energy loss grows with the damping ratio; the fix's dissipated energy closes the balance.
