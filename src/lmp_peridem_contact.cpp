@@ -138,6 +138,15 @@ int ContactParser::consume_one(int narg, char **arg, int iarg)
     lmp->error->all(FLERR, "{}: damping must be none, nodal, restitution or centroid, not {}",
                     command, mode);
   }
+  if (key == "centroid_range") {
+    if (!centroid_allowed)
+      lmp->error->all(FLERR,
+                      "{}: centroid_range belongs to damping centroid, which is available in "
+                      "pair_coeff of pair_style peridem/contact only",
+                      command);
+    spec.centroid_range = positive(narg, arg, iarg + 1, "centroid_range");
+    return 2;
+  }
   if (key == "friction") {
     if (iarg + 1 >= narg)
       lmp->error->all(FLERR, "{}: friction needs none, regularized mu or coulomb mu", command);
@@ -211,6 +220,15 @@ ContactSpec ContactParser::finish(int dimension) const
     p.kappa_eff = out.bulk_modulus;
   }
 
+  if (out.centroid_range > 0.0) {
+    if (!out.centroid)
+      error->all(FLERR, "{}: centroid_range {} needs damping centroid eps_n C", command,
+                 out.centroid_range);
+    if (out.centroid_range < p.Rc)
+      error->all(FLERR, "{}: centroid_range {} must be >= the contact radius Rc = {}", command,
+                 out.centroid_range, p.Rc);
+  }
+
   if (out.horizon > 0.0 && p.Rc > out.horizon && lmp->comm->me == 0)
     error->warning(FLERR, "{}: contact radius Rc = {} is larger than the horizon {}", command, p.Rc,
                    out.horizon);
@@ -246,7 +264,9 @@ std::string describe_contact(const ContactSpec &spec)
     damping = fmt::format("nodal r_d = {}", p.r_d);
   else if (p.damping == peridem::ContactDamping::Restitution)
     damping = fmt::format("restitution eps_n = {} C = {}", p.eps_n, p.C);
-  if (spec.centroid) damping = fmt::format("centroid eps_n = {} C = {}", p.eps_n, p.C);
+  if (spec.centroid)
+    damping = fmt::format("centroid eps_n = {} C = {} (grains touch below {})", p.eps_n, p.C,
+                          spec.centroid_reach());
   std::string friction = "none";
   if (p.friction == peridem::ContactFriction::Regularized)
     friction = fmt::format("regularized mu = {}", p.mu);

@@ -16,6 +16,8 @@
      damping none | nodal r_d | restitution eps_n C | centroid eps_n C
                              (centroid: dashpot between grain centres, PeriDEM
                              seed eq. 26-30; pair_style peridem/contact only)
+     centroid_range D        damping centroid acts while two nodes of the
+                             grains are closer than D >= R_c (default R_c)
      friction none | regularized mu | coulomb mu
 
    Exactly one of material / Kn, and one of Rc / Rc_factor are required.
@@ -48,6 +50,11 @@ struct ContactSpec {
   // params.damping is then None (no nodal dashpot) and params.eps_n, C and
   // kappa_eff hold eps_bar, C_bar and kappa_eff of eq. 28.
   bool centroid = false;
+  // centroid_range D: the dashpot acts while two nodes of the grains are
+  // closer than D (0: R_c, eq. 27 as written; D >= R_c)
+  double centroid_range = 0.0;
+  // distance below which two grains count as touching for the dashpot
+  double centroid_reach() const { return centroid_range > 0.0 ? centroid_range : params.Rc; }
 };
 
 // Collects contact keywords among other keywords of a command (layered

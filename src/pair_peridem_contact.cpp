@@ -59,6 +59,7 @@ PairPeridemContact::~PairPeridemContact()
     memory->destroy(setflag);
     memory->destroy(cutsq);
     memory->destroy(cut);
+    memory->destroy(touchsq);
   }
 }
 
@@ -100,7 +101,18 @@ void PairPeridemContact::compute(int eflag, int vflag)
       const double dx = x[j][0] - x[i][0];
       const double dy = x[j][1] - x[i][1];
       const double dz = x[j][2] - x[i][2];
-      if (dx * dx + dy * dy + dz * dz >= cutsq[itype][jtype]) continue;
+      const double rsq = dx * dx + dy * dy + dz * dz;
+      if (rsq >= cutsq[itype][jtype]) continue;
+      const PERIDEM::ContactSpec &sp = spec[itype][jtype];
+
+      // two grains touch (closer than R_c, or centroid_range): damping
+      // centroid of this grain pair (seed eq. 27)
+      if (sp.centroid && molecule[i] != molecule[j] && rsq < touchsq[itype][jtype]) {
+        if (molecule[i] < molecule[j])
+          touch_local.push_back({molecule[i], molecule[j], itype, jtype});
+        else
+          touch_local.push_back({molecule[j], molecule[i], jtype, itype});
+      }
 
       // same grain, no intact bond (bonded pairs are not in the list):
       // self-contact with the reference distance (grain-shape seed §4.4)
@@ -122,16 +134,8 @@ void PairPeridemContact::compute(int eflag, int vflag)
       in.mass_i = rmass[i];
       in.mass_j = rmass[j];
 
-      const PERIDEM::ContactSpec &sp = spec[itype][jtype];
       const peridem::ContactResult res = peridem::contact_force(in, sp.params);
       if (!res.contact) continue;
-      // two grains closer than R_c: damping centroid of this grain pair
-      if (sp.centroid && in.ref_dist < 0.0) {
-        if (molecule[i] < molecule[j])
-          touch_local.push_back({molecule[i], molecule[j], itype, jtype});
-        else
-          touch_local.push_back({molecule[j], molecule[i], jtype, itype});
-      }
 
       f[i][0] += res.f[0];
       f[i][1] += res.f[1];
@@ -373,10 +377,11 @@ void PairPeridemContact::allocate()
   memory->create(setflag, n, n, "pair:setflag");
   memory->create(cutsq, n, n, "pair:cutsq");
   memory->create(cut, n, n, "pair:cut");
+  memory->create(touchsq, n, n, "pair:touchsq");
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) {
       setflag[i][j] = 0;
-      cut[i][j] = 0.0;
+      cut[i][j] = touchsq[i][j] = 0.0;
     }
   spec.assign(n, std::vector<PERIDEM::ContactSpec>(n));
 }
@@ -443,6 +448,9 @@ void PairPeridemContact::mix(int i, int j)
   p.eps_n = 0.5 * (a.params.eps_n + b.params.eps_n);
   p.C = 0.5 * (a.params.C + b.params.C);
   p.mu = 0.5 * (a.params.mu + b.params.mu);
+  m.centroid_range = (a.centroid_range > 0.0 || b.centroid_range > 0.0)
+                         ? 0.5 * (a.centroid_reach() + b.centroid_reach())
+                         : 0.0;
   m.origin = fmt::format("mixed from types {} and {}", i, j);
   spec[i][j] = spec[j][i] = m;
   if (comm->me == 0)
@@ -452,7 +460,10 @@ void PairPeridemContact::mix(int i, int j)
 double PairPeridemContact::init_one(int i, int j)
 {
   if (!setflag[i][j]) mix(i, j);
-  cut[i][j] = cut[j][i] = spec[i][j].params.Rc;
+  const PERIDEM::ContactSpec &s = spec[i][j];
+  const double touch = s.centroid ? s.centroid_reach() : 0.0;
+  touchsq[i][j] = touchsq[j][i] = touch * touch;
+  cut[i][j] = cut[j][i] = std::max(s.params.Rc, touch);
   return cut[i][j];
 }
 
@@ -559,8 +570,9 @@ void PairPeridemContact::write_restart(FILE *fp)
       if (!setflag[i][j]) continue;
       const PERIDEM::ContactSpec &s = spec[i][j];
       fwrite(&s.params, sizeof(peridem::ContactParams), 1, fp);
-      const double extra[4] = {s.bulk_modulus, s.horizon, s.density, s.centroid ? 1.0 : 0.0};
-      fwrite(extra, sizeof(double), 4, fp);
+      const double extra[5] = {s.bulk_modulus, s.horizon, s.density, s.centroid ? 1.0 : 0.0,
+                               s.centroid_range};
+      fwrite(extra, sizeof(double), 5, fp);
     }
 }
 
@@ -574,17 +586,18 @@ void PairPeridemContact::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
       PERIDEM::ContactSpec &s = spec[i][j];
-      double extra[4];
+      double extra[5];
       if (comm->me == 0) {
         utils::sfread(FLERR, &s.params, sizeof(peridem::ContactParams), 1, fp, nullptr, error);
-        utils::sfread(FLERR, extra, sizeof(double), 4, fp, nullptr, error);
+        utils::sfread(FLERR, extra, sizeof(double), 5, fp, nullptr, error);
       }
       MPI_Bcast(&s.params, sizeof(peridem::ContactParams), MPI_BYTE, 0, world);
-      MPI_Bcast(extra, 4, MPI_DOUBLE, 0, world);
+      MPI_Bcast(extra, 5, MPI_DOUBLE, 0, world);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
       s.density = extra[2];
       s.centroid = extra[3] != 0.0;
+      s.centroid_range = extra[4];
       s.origin = "restart file";
       spec[j][i] = s;
     }

@@ -45,7 +45,8 @@ class PairPeridemContact : public Pair {
  protected:
   // contact law of each type pair, index [i][j] with 1 <= i, j <= ntypes
   std::vector<std::vector<PERIDEM::ContactSpec>> spec;
-  double **cut;      // contact radius of each type pair
+  double **cut;      // contact radius of each type pair (or centroid_range)
+  double **touchsq;  // squared distance below which grains touch (damping centroid)
   int self_contact;  // 1: nodes of one grain without an intact bond touch too
   double dissipated; // energy dissipated by damping and friction on this rank
 

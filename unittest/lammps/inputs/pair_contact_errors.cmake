@@ -43,3 +43,15 @@ add_test(NAME contact_rc_above_horizon_warns
 set_tests_properties(contact_rc_above_horizon_warns PROPERTIES
   PASS_REGULAR_EXPRESSION "WARNING: pair_coeff: contact radius Rc = 0.5 is larger than the horizon 0.3"
   FAIL_REGULAR_EXPRESSION "ERROR")
+# centroid_range: only with damping centroid, never below R_c, not for walls
+peridem_contact_error(centroid_range_without_centroid
+  "pair_coeff: centroid_range 0.3 needs damping centroid eps_n C"
+  -var coeff "* * Kn 1 horizon 0.5 Rc 0.2 centroid_range 0.3")
+peridem_contact_error(centroid_range_below_rc
+  "pair_coeff: centroid_range 0.1 must be >= the contact radius Rc = 0.2"
+  -var coeff "* * Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_range 0.1")
+peridem_contact_error(centroid_range_zero "pair_coeff: centroid_range must be > 0, not 0"
+  -var coeff "* * Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_range 0")
+peridem_add_error_test(centroid_range_in_wall ${_in}/wall_error.in
+  "fix peridem/wall: centroid_range belongs to damping centroid, which is available in pair_coeff"
+  -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 1 centroid_range 0.6" -var nsteps 0)
