@@ -69,3 +69,12 @@ target_link_options(lmp_peridem PRIVATE -Wl,--no-as-needed)
 set_target_properties(lmp_peridem PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
 
 install(TARGETS peridem lmp_peridem)
+
+# peridemplugin.so for LAMMPS builds with the PLUGIN package ("plugin load
+# peridemplugin.so"); Debian's LAMMPS has none, see plugin/peridem_plugin.cpp
+add_library(peridemplugin MODULE ${PROJECT_SOURCE_DIR}/plugin/peridem_plugin.cpp)
+target_link_libraries(peridemplugin PRIVATE peridem)
+target_compile_options(peridemplugin PRIVATE -Wall -Wextra -Wno-unused-parameter)
+set_target_properties(peridemplugin PROPERTIES PREFIX "" OUTPUT_NAME peridemplugin
+  LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
+install(TARGETS peridemplugin LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/lammps/plugins)

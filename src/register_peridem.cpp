@@ -85,10 +85,15 @@ std::string version_mismatch_message(const std::string &compiled, const std::str
          "'; rebuild PERIDEM with PERIDEM_LAMMPS_SRC pointing at the matching LAMMPS source tree";
 }
 
-void register_styles(LAMMPS *lmp, const std::string &expected_version)
+void check_lammps_version(LAMMPS *lmp, const std::string &expected_version)
 {
   const std::string mismatch = version_mismatch_message(expected_version, lmp->version);
   if (!mismatch.empty()) lmp->error->all(FLERR, mismatch);
+}
+
+void register_styles(LAMMPS *lmp, const std::string &expected_version)
+{
+  check_lammps_version(lmp, expected_version);
   insert_styles(lmp);
 }
 

@@ -32,6 +32,10 @@ namespace PERIDEM {
 /* The message for a version mismatch, empty when the versions agree. */
 std::string version_mismatch_message(const std::string &compiled, const std::string &running);
 
+/* A LAMMPS error (the process ends) unless `lmp` is LAMMPS version
+   `expected_version`. */
+void check_lammps_version(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_version);
+
 /* Register the styles after checking that `lmp` is the LAMMPS version
    `expected_version`; peridem_register() passes the compiled-in version. */
 void register_styles(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_version);
