@@ -44,7 +44,7 @@ PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
     : Pair(lmp), cut(nullptr), self_contact(1), dissipated(0.0), centroid_on(0), grains_stale(true)
 {
   restartinfo = 1;
-  single_enable = 0;
+  single_enable = 1;
   writedata = 0;
   // compute pair ... returns the dissipated energy as its vector
   nextra = 1;
@@ -63,6 +63,59 @@ PairPeridemContact::~PairPeridemContact()
   }
 }
 
+/* ----------------------------------------------------------------------
+   the contact law's input for the pair i, j (any two atoms within the
+   cutoff); false for nodes of one grain without self-contact. Nodes of one
+   grain are never joined by an intact bond here (bonded pairs are not in
+   the neighbour list): they touch with the self-contact law, whose radius
+   depends on the reference distance (grain-shape seed §4.4).
+------------------------------------------------------------------------- */
+
+bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) const
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **x0 = atom->x0;
+  in.ref_dist = -1.0;
+  if (atom->molecule[i] == atom->molecule[j]) {
+    if (!self_contact) return false;
+    double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+    domain->minimum_image(d0[0], d0[1], d0[2]);
+    in.ref_dist = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
+  }
+  for (int k = 0; k < 3; k++) {
+    in.sep[k] = x[j][k] - x[i][k];
+    in.vrel[k] = v[i][k] - v[j][k];
+  }
+  in.vol_i = atom->vfrac[i];
+  in.vol_j = atom->vfrac[j];
+  in.mass_i = atom->rmass[i];
+  in.mass_j = atom->rmass[j];
+  in.dt = update->dt;
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   one pair for compute pair/local and pair_write-like tools: the normal
+   part of the pair force (repulsion and normal damping; friction is
+   tangential and the centroid dashpot acts between grain centres, so
+   neither is in it) as fforce with F_i = fforce (x_i - x_j), and the
+   repulsion energy
+------------------------------------------------------------------------- */
+
+double PairPeridemContact::single(int i, int j, int itype, int jtype, double rsq,
+                                  double /*factor_coul*/, double /*factor_lj*/, double &fforce)
+{
+  fforce = 0.0;
+  peridem::ContactInput in;
+  if (rsq <= 0.0 || !pair_input(i, j, in)) return 0.0;
+  const peridem::ContactResult res = peridem::contact_force(in, spec[itype][jtype].params);
+  if (!res.contact) return 0.0;
+  // in.sep = x_j - x_i
+  fforce = -(res.f[0] * in.sep[0] + res.f[1] * in.sep[1] + res.f[2] * in.sep[2]) / rsq;
+  return res.energy;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void PairPeridemContact::compute(int eflag, int vflag)
@@ -70,11 +123,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   double **x = atom->x;
-  double **v = atom->v;
   double **f = atom->f;
-  double **x0 = atom->x0;
-  const double *vfrac = atom->vfrac;
-  const double *rmass = atom->rmass;
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
@@ -89,7 +138,6 @@ void PairPeridemContact::compute(int eflag, int vflag)
   double dissipated_now = 0.0;
   touch_local.clear();
   peridem::ContactInput in;
-  in.dt = dt;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -114,26 +162,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
           touch_local.push_back({molecule[j], molecule[i], jtype, itype});
       }
 
-      // same grain, no intact bond (bonded pairs are not in the list):
-      // self-contact with the reference distance (grain-shape seed §4.4)
-      in.ref_dist = -1.0;
-      if (molecule[i] == molecule[j]) {
-        if (!self_contact) continue;
-        double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-        domain->minimum_image(d0[0], d0[1], d0[2]);
-        in.ref_dist = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
-      }
-      in.sep[0] = dx;
-      in.sep[1] = dy;
-      in.sep[2] = dz;
-      in.vrel[0] = v[i][0] - v[j][0];
-      in.vrel[1] = v[i][1] - v[j][1];
-      in.vrel[2] = v[i][2] - v[j][2];
-      in.vol_i = vfrac[i];
-      in.vol_j = vfrac[j];
-      in.mass_i = rmass[i];
-      in.mass_j = rmass[j];
-
+      if (!pair_input(i, j, in)) continue;
       const peridem::ContactResult res = peridem::contact_force(in, sp.params);
       if (!res.contact) continue;
 

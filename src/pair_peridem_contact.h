@@ -31,6 +31,7 @@ class PairPeridemContact : public Pair {
   void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
+  double single(int, int, int, int, double, double, double, double &) override;
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
   void write_restart_settings(FILE *) override;
@@ -43,6 +44,8 @@ class PairPeridemContact : public Pair {
   double memory_usage() override;
 
  protected:
+  // the contact law's input for atoms i, j; false: same grain, self-contact off
+  bool pair_input(int i, int j, peridem::ContactInput &in) const;
   // contact law of each type pair, index [i][j] with 1 <= i, j <= ntypes
   std::vector<std::vector<PERIDEM::ContactSpec>> spec;
   double **cut;      // contact radius of each type pair (or centroid_range)

@@ -56,3 +56,11 @@ add_test(NAME contact_bonded_pair
           -var data ${_in}/two_nodes.data)
 set_tests_properties(contact_bonded_pair PROPERTIES
   PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
+
+# compute pair/local (Pair::single): the normal contact force of each pair
+# against the closed form and the forces on the atoms
+add_test(NAME contact_pair_local
+  COMMAND lmp_peridem -in ${_in}/contact_pair_local.in -log none -echo none
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(contact_pair_local PROPERTIES
+  PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
