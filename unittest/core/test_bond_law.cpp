@@ -238,6 +238,21 @@ TEST(BondLaw, ForceIsDerivativeOfEnergyAlongBond)
       }
 }
 
+// The bond loop's form (one division per bond) is the same law up to rounding.
+TEST(BondLaw, LoopFormMatchesLaw)
+{
+  const double k = 3.7e20 * 2.1e-10 * 1.3e-10;
+  for (double r0 : {0.2e-3, 0.7e-3, 1.5e-3})
+    for (double s : {-0.03, -1e-4, 0.0, 2e-4, 0.05}) {
+      const double r = r0 * (1 + s);
+      const double s_loop = stretch_from_inverse(r, 1.0 / r0);
+      EXPECT_NEAR(s_loop, stretch(r, r0), 1e-15) << "r0=" << r0 << " s=" << s;
+      const double f_law = bond_force(k, 1.0, stretch(r, r0), 1.0, 1.0) / r;
+      const double f_loop = bond_force_per_length(k, 1.0 / r0, 1.0 / r);
+      EXPECT_NEAR(f_loop, f_law, 1e-12 * k / r0 * (std::fabs(s) + 1e-3)) << r0 << " " << s;
+    }
+}
+
 // Force on node i is F e = -grad_{y_i} E and on node j -F e (finite differences of E with
 // respect to the vector positions).
 TEST(BondLaw, ForceIsMinusGradientOfEnergyWrtPositions)
