@@ -11,6 +11,7 @@
 #include "memory.h"
 #include "update.h"
 
+#include <cstring>
 #include <algorithm>
 
 using namespace LAMMPS_NS;
@@ -26,6 +27,12 @@ FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
+  // one instance, the bond style's: a second one would count nothing
+  if (std::strcmp(id, ID) != 0)
+    error->all(FLERR,
+               "fix peridem/bonds is created by bond_style peridem (as fix {}); do not define it "
+               "yourself (fix {})",
+               ID, id);
   restart_peratom = 1;
   comm_reverse = 2;
   grow_arrays(atom->nmax);

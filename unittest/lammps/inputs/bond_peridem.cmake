@@ -45,3 +45,5 @@ set_tests_properties(bond_cohesive_allowed PROPERTIES
 
 # the stock peri/pmb example rebuilt with bond_style peridem: 1 and 2 ranks agree
 peridem_add_example_test(peri_impact peri-impact in.peri_impact 1 2)
+peridem_bond_error(user_bonds_fix bond_cases.data bond_user_fix.lmp
+  "fix peridem/bonds is created by bond_style peridem \\(as fix PERIDEM_BONDS\\); do not define it yourself \\(fix mine\\)")
