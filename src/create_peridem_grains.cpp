@@ -67,6 +67,22 @@ struct Rotation {
     r.m[1][1] = c;
     return r;
   }
+  // by angle about the unit vector a (Rodrigues' formula)
+  static Rotation about_axis(double angle, const double a[3])
+  {
+    const double c = std::cos(angle), s = std::sin(angle), t = 1.0 - c;
+    Rotation r;
+    r.m[0][0] = c + t * a[0] * a[0];
+    r.m[0][1] = t * a[0] * a[1] - s * a[2];
+    r.m[0][2] = t * a[0] * a[2] + s * a[1];
+    r.m[1][0] = t * a[1] * a[0] + s * a[2];
+    r.m[1][1] = c + t * a[1] * a[1];
+    r.m[1][2] = t * a[1] * a[2] - s * a[0];
+    r.m[2][0] = t * a[2] * a[0] - s * a[1];
+    r.m[2][1] = t * a[2] * a[1] + s * a[0];
+    r.m[2][2] = c + t * a[2] * a[2];
+    return r;
+  }
   // uniformly random orientation (Shoemake's unit quaternion)
   static Rotation random3d(double u1, double u2, double u3)
   {
@@ -173,7 +189,9 @@ struct CreatePeridemGrains::Options {
   std::vector<std::array<double, 3>> at;
   double spacing = 0.0, horizon = 0.0, density = 0.0, scale = 1.0, extrude = 0.0;
   double overlap = 0.0;
-  double angle = 0.0;        // radians
+  double angle = 0.0; // radians
+  double axis[3] = {0.0, 0.0, 1.0};
+  bool axis_given = false;
   long long rotate_seed = 0; // > 0: random rotation
   int bond_type = 1;
   peridem::NodalVolume volume = peridem::NodalVolume::CellArea;
@@ -299,6 +317,15 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       } else {
         o.angle = utils::numeric(FLERR, arg[iarg++], false, lmp) * M_PI / 180.0;
       }
+    } else if (key == "axis") {
+      need(3, "axis");
+      for (int k = 0; k < 3; k++) o.axis[k] = utils::numeric(FLERR, arg[iarg + k], false, lmp);
+      const double norm =
+          std::sqrt(o.axis[0] * o.axis[0] + o.axis[1] * o.axis[1] + o.axis[2] * o.axis[2]);
+      if (!(norm > 0.0)) error->all(FLERR, "{}: rotation axis must not be zero", CMD);
+      for (double &a : o.axis) a /= norm;
+      o.axis_given = true;
+      iarg += 3;
     } else if (key == "scale") {
       need(1, "scale");
       o.scale = positive(arg[iarg++], "scale");
@@ -362,6 +389,11 @@ void CreatePeridemGrains::check(const Options &o)
     error->all(FLERR, "{}: invalid bond type {} (the box has {} bond types)", CMD, o.bond_type,
                atom->nbondtypes);
   if (o.at.empty()) error->all(FLERR, "{}: no grain position given (use at x y z)", CMD);
+  if (o.axis_given && o.rotate_seed > 0)
+    error->all(FLERR, "{}: axis applies to a fixed rotate angle, not to rotate random", CMD);
+  if (o.axis_given && domain->dimension == 2 && (o.axis[0] != 0.0 || o.axis[1] != 0.0))
+    error->all(FLERR, "{}: a 2d grain rotates about z only; axis {} {} {} needs dimension 3", CMD,
+               o.axis[0], o.axis[1], o.axis[2]);
   if (!(o.density > 0.0))
     error->all(FLERR, "{}: no density: give density or material FILE NAME", CMD);
   if (!(o.horizon > 0.0))
@@ -545,7 +577,7 @@ void CreatePeridemGrains::place(const Options &o, const Grain &g)
   std::vector<std::array<double, 3>> X(n);
   std::vector<int> local(n);
   for (bigint ig = 0; ig < ngrains; ig++) {
-    Rotation R = Rotation::about_z(o.angle);
+    Rotation R = o.axis_given ? Rotation::about_axis(o.angle, o.axis) : Rotation::about_z(o.angle);
     if (o.rotate_seed > 0) {
       const double u1 = uniform(gen), u2 = uniform(gen), u3 = uniform(gen);
       R = domain->dimension == 2 ? Rotation::about_z(2 * M_PI * u1)

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <map>
+#include <array>
 #include <set>
 #include <string>
 
@@ -226,6 +227,38 @@ TEST_F(CreatePeridemGrainsTest, SolidAndExtrudedGrainsEqualCoreLibrary)
   for (const auto &b : bond_set(lmp))
     if (b.first >= tag0) mine.insert(b);
   EXPECT_EQ(mine, core_bonds(plus.bonds, tag0));
+}
+
+// rotate A axis X Y Z: an extruded plus (arms along x and y, thickness 0.6 along z) turned
+// 90 degrees about x lies with its thickness along y; node positions are R (x0 - c) + c
+// with Rodrigues' rotation, bonds unchanged.
+TEST_F(CreatePeridemGrainsTest, RotationAboutAnAxis3D)
+{
+  command(grain_box("lj", 3, "-3 3 -3 3 -3 3", 40));
+  command("create_peridem_grains 1 plus extrude 0.6 spacing 0.1 horizon 0.2 density 1 at 0 0 0");
+  const auto plain = bond_set(lmp);
+  std::vector<std::array<double, 3>> before(lmp->atom->natoms + 1);
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    for (int d = 0; d < 3; d++) before[lmp->atom->tag[i]][d] = lmp->atom->x[i][d];
+  command("delete_atoms group all bond yes");
+  command("reset_atom_ids");
+  command("create_peridem_grains 1 plus extrude 0.6 spacing 0.1 horizon 0.2 density 1 at 0 0 0 "
+          "rotate 90 axis 2 0 0");
+  ASSERT_EQ(lmp->atom->natoms + 1, static_cast<bigint>(before.size()));
+  EXPECT_EQ(bond_set(lmp), plain);
+  double zmax = 0.0, ymax = 0.0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    const auto &p = before[lmp->atom->tag[i]];
+    // about x by 90 degrees: (x, y, z) -> (x, -z, y)
+    EXPECT_NEAR(lmp->atom->x[i][0], p[0], 1e-14);
+    EXPECT_NEAR(lmp->atom->x[i][1], -p[2], 1e-14);
+    EXPECT_NEAR(lmp->atom->x[i][2], p[1], 1e-14);
+    for (int d = 0; d < 3; d++) EXPECT_EQ(lmp->atom->x0[i][d], lmp->atom->x[i][d]);
+    ymax = std::max(ymax, std::fabs(lmp->atom->x[i][1]));
+    zmax = std::max(zmax, std::fabs(lmp->atom->x[i][2]));
+  }
+  EXPECT_LT(ymax, 0.31); // the thickness (0.6) now along y
+  EXPECT_GT(zmax, 0.9);  // an arm (radius 1) now along z
 }
 
 TEST_F(CreatePeridemGrainsTest, GmshGrainVolumesSumToMeshArea)

@@ -55,3 +55,13 @@ peridem_add_error_test(cut_bonds_bad_segment ${_g}/grain_box.in
   -var before "create_peridem_grains 1 disk radius 1 ${_ok}"
   -var grain "disk radius 1 spacing 0.1 horizon 0.3 density 1 at 3 3 0"
   -var after "cut_peridem_bonds all segment 1 1 1 1")
+# rotation axis: not zero, not with rotate random, about z only in 2d
+peridem_add_error_test(grains_axis_zero ${_g}/grain_box.in
+  "create_peridem_grains: rotation axis must not be zero"
+  -var grain "disk radius 1 ${_ok} rotate 30 axis 0 0 0")
+peridem_add_error_test(grains_axis_random ${_g}/grain_box.in
+  "create_peridem_grains: axis applies to a fixed rotate angle, not to rotate random"
+  -var grain "disk radius 1 ${_ok} rotate random 5 axis 0 0 1")
+peridem_add_error_test(grains_axis_2d ${_g}/grain_box.in
+  "create_peridem_grains: a 2d grain rotates about z only; axis 1 0 0 needs dimension 3"
+  -var grain "disk radius 1 ${_ok} rotate 30 axis 1 0 0")
