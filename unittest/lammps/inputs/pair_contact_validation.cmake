@@ -64,3 +64,10 @@ add_test(NAME contact_pair_local
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(contact_pair_local PROPERTIES
   PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
+
+# examples/force-chains, shortened: the same thermo output on 1 and 2 ranks
+add_test(NAME example.force_chains
+  COMMAND ${PERIDEM_RUN}/run_example.sh $<TARGET_FILE:lmp_peridem>
+          ${PROJECT_SOURCE_DIR}/examples/force-chains in.force_chains
+          ${CMAKE_CURRENT_BINARY_DIR}/examples/force_chains 1 2)
+set_tests_properties(example.force_chains PROPERTIES ENVIRONMENT "PERIDEM_EXAMPLE_ARGS=-var settle 3000 -var steps 1000")
