@@ -96,7 +96,7 @@ bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) con
 }
 
 /* ----------------------------------------------------------------------
-   one pair for compute pair/local and pair_write-like tools: the normal
+   one pair for compute pair/local and compute group/group: the normal
    part of the pair force (repulsion and normal damping; friction is
    tangential and the centroid dashpot acts between grain centres, so
    neither is in it) as fforce with F_i = fforce (x_i - x_j), and the
