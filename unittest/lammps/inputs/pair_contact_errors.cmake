@@ -55,3 +55,13 @@ peridem_contact_error(centroid_range_zero "pair_coeff: centroid_range must be > 
 peridem_add_error_test(centroid_range_in_wall ${_in}/wall_error.in
   "fix peridem/wall: centroid_range belongs to damping centroid, which is available in pair_coeff"
   -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 1 centroid_range 0.6" -var nsteps 0)
+# centroid_range of unlike types without their own pair_coeff: the mean of
+# the two reaches (R_c where a type has no range), like R_c itself
+add_test(NAME contact_centroid_range_mixed
+  COMMAND lmp_peridem -in ${_in}/pair_contact_error.in -log none -echo none
+          -var coeff "1 1 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_range 0.3"
+          -var extra "pair_coeff 2 2 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(contact_centroid_range_mixed PROPERTIES
+  PASS_REGULAR_EXPRESSION "peridem/contact 1 2: .*mixed from types 1 and 2.*grains touch below 0.25,"
+  FAIL_REGULAR_EXPRESSION "ERROR")
