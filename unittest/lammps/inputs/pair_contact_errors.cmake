@@ -63,5 +63,5 @@ add_test(NAME contact_centroid_range_mixed
           -var extra "pair_coeff 2 2 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(contact_centroid_range_mixed PROPERTIES
-  PASS_REGULAR_EXPRESSION "peridem/contact 1 2: .*mixed from types 1 and 2.*grains touch below 0.25,"
+  PASS_REGULAR_EXPRESSION "peridem/contact 1 2: .*mixed from types 1 and 2.*grains touch below 0.25\\)"
   FAIL_REGULAR_EXPRESSION "ERROR")
