@@ -18,52 +18,69 @@
 #include "lammps.h"
 #include "version.h"
 
-#include "atom_vec_peridem.h"
-#include "bond_peridem.h"
-#include "compute_peridem_damage.h"
-#include "create_peridem_grains.h"
-#include "cut_peridem_bonds.h"
-#include "fix_peridem_bonds.h"
-#include "fix_peridem_wall.h"
-#include "pair_peridem_contact.h"
 #include "register_peridem.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
 
-// creators with the signatures of the plugin interface; LAMMPS casts them
-// back to its typed creators (Force::PairCreator, Modify::FixCreator, ...)
-template <typename Base, typename T> void *make1(void *lmp)
-{
-  return static_cast<Base *>(new T(static_cast<LAMMPS *>(lmp)));
-}
-template <typename Base, typename T> void *make2(void *lmp, int narg, char **arg)
-{
-  return static_cast<Base *>(new T(static_cast<LAMMPS *>(lmp), narg, arg));
-}
+// Passes each style of PERIDEM::for_each_style to the plugin loader. The
+// loader stores a creator as an untyped factory and casts it back to the
+// typed creator of its style kind (Force::PairCreator, ...), so the typed
+// creators travel through the casts unchanged.
+class PluginRegistrar : public PERIDEM::StyleSink {
+ public:
+  PluginRegistrar(LAMMPS *lmp, void *handle, lammpsplugin_regfunc reg)
+      : lmp(lmp), handle(handle), reg(reg)
+  {
+  }
+  // the loader of LAMMPS 29Sep2021 has no atom styles: insert it directly
+  void atom(const char *name, PERIDEM::AtomVecCreator c) override
+  {
+    (*lmp->atom->avec_map)[name] = c;
+  }
+  void bond(const char *name, PERIDEM::BondCreator c) override
+  {
+    add("bond", name, (lammpsplugin_factory1 *)c, nullptr);
+  }
+  void pair(const char *name, PERIDEM::PairCreator c) override
+  {
+    add("pair", name, (lammpsplugin_factory1 *)c, nullptr);
+  }
+  void fix(const char *name, PERIDEM::FixCreator c) override
+  {
+    add("fix", name, nullptr, (lammpsplugin_factory2 *)c);
+  }
+  void compute(const char *name, PERIDEM::ComputeCreator c) override
+  {
+    add("compute", name, nullptr, (lammpsplugin_factory2 *)c);
+  }
+  void command(const char *name, PERIDEM::CommandCreator c) override
+  {
+    add("command", name, (lammpsplugin_factory1 *)c, nullptr);
+  }
 
-template <typename T> AtomVec *atom_vec_creator(LAMMPS *lmp)
-{
-  return new T(lmp);
-}
-
-void add(lammpsplugin_regfunc reg, void *lmp, void *handle, const char *style, const char *name,
-         lammpsplugin_factory1 *v1, lammpsplugin_factory2 *v2)
-{
-  lammpsplugin_t plugin;
-  plugin.version = LAMMPS_VERSION;
-  plugin.style = style;
-  plugin.name = name;
-  plugin.info = "PERIDEM: deformable, breakable grains (peridynamics + contact)";
-  plugin.author = "the PERIDEM developers";
-  if (v1)
-    plugin.creator.v1 = v1;
-  else
-    plugin.creator.v2 = v2;
-  plugin.handle = handle;
-  (*reg)(&plugin, lmp);
-}
+ private:
+  void add(const char *style, const char *name, lammpsplugin_factory1 *v1,
+           lammpsplugin_factory2 *v2)
+  {
+    lammpsplugin_t plugin;
+    plugin.version = LAMMPS_VERSION;
+    plugin.style = style;
+    plugin.name = name;
+    plugin.info = "PERIDEM: deformable, breakable grains (peridynamics + contact)";
+    plugin.author = "the PERIDEM developers";
+    if (v1)
+      plugin.creator.v1 = v1;
+    else
+      plugin.creator.v2 = v2;
+    plugin.handle = handle;
+    (*reg)(&plugin, lmp);
+  }
+  LAMMPS *lmp;
+  void *handle;
+  lammpsplugin_regfunc reg;
+};
 
 } // namespace
 
@@ -72,16 +89,6 @@ extern "C" void lammpsplugin_init(void *lmp_ptr, void *handle, void *regfunc)
   auto *lmp = static_cast<LAMMPS *>(lmp_ptr);
   // refuses a LAMMPS of another version with a clear error, as peridem_register does
   PERIDEM::check_lammps_version(lmp, LAMMPS_VERSION);
-  (*lmp->atom->avec_map)["peridem"] = &atom_vec_creator<AtomVecPeridem>;
-
-  auto reg = (lammpsplugin_regfunc)regfunc;
-  add(reg, lmp, handle, "bond", "peridem", &make1<Bond, BondPeridem>, nullptr);
-  add(reg, lmp, handle, "pair", "peridem/contact", &make1<Pair, PairPeridemContact>, nullptr);
-  add(reg, lmp, handle, "fix", "peridem/bonds", nullptr, &make2<Fix, FixPeridemBonds>);
-  add(reg, lmp, handle, "fix", "peridem/wall", nullptr, &make2<Fix, FixPeridemWall>);
-  add(reg, lmp, handle, "compute", "peridem/damage", nullptr,
-      &make2<Compute, ComputePeridemDamage>);
-  add(reg, lmp, handle, "command", "create_peridem_grains", &make1<Command, CreatePeridemGrains>,
-      nullptr);
-  add(reg, lmp, handle, "command", "cut_peridem_bonds", &make1<Command, CutPeridemBonds>, nullptr);
+  PluginRegistrar registrar(lmp, handle, (lammpsplugin_regfunc)regfunc);
+  PERIDEM::for_each_style(registrar);
 }

@@ -55,23 +55,35 @@ template <typename T> Command *command_creator(LAMMPS *lmp)
   return new T(lmp);
 }
 
-// One line per style. New styles are added here and in the list of names.
-void insert_styles(LAMMPS *lmp)
-{
-  (*lmp->atom->avec_map)["peridem"] = &atom_vec_creator<AtomVecPeridem>;
-  (*lmp->force->bond_map)["peridem"] = &bond_creator<BondPeridem>;
-  (*lmp->force->pair_map)["peridem/contact"] = &pair_creator<PairPeridemContact>;
-  (*lmp->modify->fix_map)["peridem/bonds"] = &fix_creator<FixPeridemBonds>;
-  (*lmp->modify->fix_map)["peridem/wall"] = &fix_creator<FixPeridemWall>;
-  (*lmp->modify->compute_map)["peridem/damage"] = &compute_creator<ComputePeridemDamage>;
-  (*lmp->input->command_map)["create_peridem_grains"] = &command_creator<CreatePeridemGrains>;
-  (*lmp->input->command_map)["cut_peridem_bonds"] = &command_creator<CutPeridemBonds>;
-}
+// inserts each style into the style map of its kind
+class MapInserter : public PERIDEM::StyleSink {
+ public:
+  explicit MapInserter(LAMMPS *lmp) : lmp(lmp) {}
+  void atom(const char *name, PERIDEM::AtomVecCreator c) override
+  {
+    (*lmp->atom->avec_map)[name] = c;
+  }
+  void bond(const char *name, PERIDEM::BondCreator c) override
+  {
+    (*lmp->force->bond_map)[name] = c;
+  }
+  void pair(const char *name, PERIDEM::PairCreator c) override
+  {
+    (*lmp->force->pair_map)[name] = c;
+  }
+  void fix(const char *name, PERIDEM::FixCreator c) override { (*lmp->modify->fix_map)[name] = c; }
+  void compute(const char *name, PERIDEM::ComputeCreator c) override
+  {
+    (*lmp->modify->compute_map)[name] = c;
+  }
+  void command(const char *name, PERIDEM::CommandCreator c) override
+  {
+    (*lmp->input->command_map)[name] = c;
+  }
 
-const char *const style_names[] = {
-    "atom_style peridem",     "bond_style peridem", "pair_style peridem/contact",
-    "compute peridem/damage", "fix peridem/bonds",  "fix peridem/wall",
-    "create_peridem_grains",  "cut_peridem_bonds",  nullptr};
+ private:
+  LAMMPS *lmp;
+};
 
 } // namespace
 
@@ -91,15 +103,25 @@ void check_lammps_version(LAMMPS *lmp, const std::string &expected_version)
   if (!mismatch.empty()) lmp->error->all(FLERR, mismatch);
 }
 
+// One line per style: the only list of PERIDEM styles (register_styles
+// and peridemplugin.so both read it).
+void for_each_style(StyleSink &sink)
+{
+  sink.atom("peridem", &atom_vec_creator<AtomVecPeridem>);
+  sink.bond("peridem", &bond_creator<BondPeridem>);
+  sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
+  sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
+  sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
+  sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
+  sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
+  sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
+}
+
 void register_styles(LAMMPS *lmp, const std::string &expected_version)
 {
   check_lammps_version(lmp, expected_version);
-  insert_styles(lmp);
-}
-
-const char *const *registered_style_names()
-{
-  return style_names;
+  MapInserter inserter(lmp);
+  for_each_style(inserter);
 }
 
 } // namespace PERIDEM

@@ -13,7 +13,13 @@
 
 namespace LAMMPS_NS {
 class LAMMPS;
-}
+class AtomVec;
+class Bond;
+class Pair;
+class Fix;
+class Compute;
+class Command;
+} // namespace LAMMPS_NS
 
 extern "C" {
 /* Register every PERIDEM style into the LAMMPS instance `lmp` (a
@@ -40,8 +46,28 @@ void check_lammps_version(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_ve
    `expected_version`; peridem_register() passes the compiled-in version. */
 void register_styles(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_version);
 
-/* Names of the registered styles, "kind name" each (for tests and docs). */
-const char *const *registered_style_names();
+/* The creators LAMMPS's style maps hold (Atom::AtomVecCreator, Force::BondCreator, ...). */
+using AtomVecCreator = LAMMPS_NS::AtomVec *(*)(LAMMPS_NS::LAMMPS *);
+using BondCreator = LAMMPS_NS::Bond *(*)(LAMMPS_NS::LAMMPS *);
+using PairCreator = LAMMPS_NS::Pair *(*)(LAMMPS_NS::LAMMPS *);
+using FixCreator = LAMMPS_NS::Fix *(*)(LAMMPS_NS::LAMMPS *, int, char **);
+using ComputeCreator = LAMMPS_NS::Compute *(*)(LAMMPS_NS::LAMMPS *, int, char **);
+using CommandCreator = LAMMPS_NS::Command *(*)(LAMMPS_NS::LAMMPS *);
+
+/* Receives every PERIDEM style with its creator, one call per style. */
+class StyleSink {
+ public:
+  virtual ~StyleSink() = default;
+  virtual void atom(const char *name, AtomVecCreator creator) = 0;
+  virtual void bond(const char *name, BondCreator creator) = 0;
+  virtual void pair(const char *name, PairCreator creator) = 0;
+  virtual void fix(const char *name, FixCreator creator) = 0;
+  virtual void compute(const char *name, ComputeCreator creator) = 0;
+  virtual void command(const char *name, CommandCreator creator) = 0;
+};
+
+/* The list of PERIDEM styles, shared by register_styles() and the plugin. */
+void for_each_style(StyleSink &sink);
 
 } // namespace PERIDEM
 
