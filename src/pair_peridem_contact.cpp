@@ -17,6 +17,7 @@
 #include "bond.h"
 #include "comm.h"
 #include "domain.h"
+#include "lmp_peridem_image.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -80,7 +81,7 @@ bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) con
   if (atom->molecule[i] == atom->molecule[j]) {
     if (!self_contact) return false;
     double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-    domain->minimum_image(d0[0], d0[1], d0[2]);
+    PERIDEM::minimum_image(domain, d0[0], d0[1], d0[2]);
     in.ref_dist = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
   }
   for (int k = 0; k < 3; k++) {
