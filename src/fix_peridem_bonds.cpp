@@ -11,8 +11,9 @@
 #include "memory.h"
 #include "update.h"
 
-#include <cstring>
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -35,10 +36,17 @@ FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
                ID, id);
   restart_peratom = 1;
   comm_reverse = 2;
+  // LAMMPS 29Sep2021 lists the fixes that may force a rebuild in
+  // Neighbor::init(), at the start of each run: declare it now, not at the
+  // first break, or the first run that breaks bonds never rebuilds early.
+  // next_reneighbor names a step only after a break (collect()).
+  force_reneighbor = 1;
+  next_reneighbor = -1;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nmax; i++) nbroken[i] = zbroken[i] = 0.0;
+  adopt_data_file_damage();
 }
 
 FixPeridemBonds::~FixPeridemBonds()
@@ -57,6 +65,12 @@ int FixPeridemBonds::setmask()
 void FixPeridemBonds::init()
 {
   broken_here = 0;
+  // write_data (which calls init first) writes the damage section only
+  // when there is damage, so undamaged data files stay plain LAMMPS files
+  int any = 0, any_all = 0;
+  for (int i = 0; i < atom->nlocal && !any; i++) any = nbroken[i] > 0.0;
+  MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
+  wd_section = any_all;
 }
 
 /* ----------------------------------------------------------------------
@@ -95,10 +109,8 @@ void FixPeridemBonds::collect()
       for (tagint p : partners) forget_partner(i, p);
   lost_partners.clear();
   // with a pair style, rebuild the neighbour lists at the next step
-  if (force->pair) {
-    force_reneighbor = 1;
-    next_reneighbor = update->ntimestep + 1;
-  }
+  // (Neighbor::decide() compares next_reneighbor with the step)
+  if (force->pair) next_reneighbor = update->ntimestep + 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -301,4 +313,77 @@ int FixPeridemBonds::maxsize_restart()
 double FixPeridemBonds::memory_usage()
 {
   return 2.0 * atom->nmax * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   data files (issue 9): the broken bonds are gone from the Bonds section,
+   so write_data adds a section "PeridemDamage" with one line per node:
+   ID, number of broken bonds, Z of the broken bonds. read_data reads it
+   into a fix property/atom d_peridem_nbroken d_peridem_zbroken, which this
+   fix adopts when bond_style peridem creates it.
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::adopt_data_file_damage()
+{
+  int flag = 0, cols = 0;
+  const int inb = atom->find_custom("peridem_nbroken", flag, cols);
+  if (inb < 0) return;
+  if (flag != 1 || cols != 0)
+    error->all(FLERR, "fix {}: per-atom property peridem_nbroken must be a d_ vector", ID);
+  const int iz = atom->find_custom("peridem_zbroken", flag, cols);
+  if (iz < 0 || flag != 1 || cols != 0)
+    error->all(FLERR,
+               "fix {}: per-atom property peridem_nbroken needs peridem_zbroken (define both: fix "
+               "ID all property/atom d_peridem_nbroken d_peridem_zbroken)",
+               ID);
+  const double *nb = atom->dvector[inb], *zb = atom->dvector[iz];
+  bigint here = 0, all = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (nb[i] < 0.0 || nb[i] != std::floor(nb[i]) || zb[i] < 0.0)
+      error->one(FLERR,
+                 "fix {}: invalid damage of atom {} in the data file: broken count {} and Z {} "
+                 "(need a whole number >= 0 and Z >= 0)",
+                 ID, atom->tag[i], nb[i], zb[i]);
+    nbroken[i] = nb[i];
+    zbroken[i] = zb[i];
+    here += static_cast<bigint>(nb[i]);
+  }
+  MPI_Allreduce(&here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "fix {}: {} broken bond ends (per-node counts) taken from property/atom "
+                   "peridem_nbroken, peridem_zbroken\n",
+                   ID, all);
+}
+
+void FixPeridemBonds::write_data_section_size(int, int &nx, int &ny)
+{
+  nx = atom->nlocal;
+  ny = 3;
+}
+
+void FixPeridemBonds::write_data_section_pack(int, double **buf)
+{
+  for (int i = 0; i < atom->nlocal; i++) {
+    buf[i][0] = ubuf(atom->tag[i]).d;
+    buf[i][1] = nbroken[i];
+    buf[i][2] = zbroken[i];
+  }
+}
+
+void FixPeridemBonds::write_data_section_keyword(int, FILE *fp)
+{
+  // the column hint names the property/atom vectors that read it back
+  fmt::print(fp, "\n{} # d_peridem_nbroken d_peridem_zbroken\n\n", DATA_SECTION);
+  utils::logmesg(lmp,
+                 "fix {}: the data file has a {} section (broken bonds per node); read it "
+                 "back with\n  fix damage all property/atom d_peridem_nbroken d_peridem_zbroken\n"
+                 "  read_data FILE fix damage NULL {}\n",
+                 ID, DATA_SECTION, DATA_SECTION);
+}
+
+void FixPeridemBonds::write_data_section(int, FILE *fp, int n, double **buf, int)
+{
+  for (int i = 0; i < n; i++)
+    fmt::print(fp, "{} {} {:.17g}\n", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2]);
 }

@@ -55,6 +55,14 @@ class FixPeridemBonds : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
+  // write_data: a PeridemDamage section (ID, broken count, Z) when any node
+  // has broken bonds; read back through fix property/atom (see doc)
+  void write_data_section_size(int, int &, int &) override;
+  void write_data_section_pack(int, double **) override;
+  void write_data_section_keyword(int, FILE *) override;
+  void write_data_section(int, FILE *, int, double **, int) override;
+  static constexpr const char *DATA_SECTION = "PeridemDamage";
+
   // the bond between local or ghost atoms i1, i2 broke with damage term z;
   // removes it from the bond arrays of the local atoms that store it
   void bond_broken(int i1, int i2, double z);
@@ -73,6 +81,7 @@ class FixPeridemBonds : public Fix {
   int comm_mode; // which reverse communication is under way
 
   void forget_partner(int i, tagint partner);
+  void adopt_data_file_damage();
 
   void clear_ghosts();
   void collect();

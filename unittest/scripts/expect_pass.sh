@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# expect_pass.sh [--regex REGEX] COMMAND...: passes when COMMAND exits with
+# code 0, prints a line matching REGEX (extended regex, default PERIDEM-PASS)
+# and prints neither PERIDEM-FAIL nor a LAMMPS ERROR line nor a crash. (ctest's PASS_REGULAR_EXPRESSION alone ignores the exit code, so a
+# crash after the PASS line would pass.)
+set -u
+regex="PERIDEM-PASS"
+if [ "${1:-}" = "--regex" ]; then regex="$2"; shift 2; fi
+source "$(dirname "$0")/mpi_env.sh"
+out="$("$@" 2>&1)"
+rc=$?
+echo "$out"
+if [ $rc -ne 0 ]; then echo "FAIL: exit code $rc (expected 0)"; exit 1; fi
+if grep -E "PERIDEM-FAIL|ERROR|Segmentation|signal [0-9]+|core dumped" <<<"$out" >/dev/null; then
+  echo "FAIL: a failure, an error or a crash was reported"; exit 1
+fi
+if ! grep -E "${regex}" <<<"$out" >/dev/null; then echo "FAIL: no line matching /${regex}/"; exit 1; fi
+echo "OK: exit code 0 and a line matching /${regex}/"
