@@ -182,6 +182,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       utils::logmesg(lmp, "{} {}: {}\n", STYLE, id, PERIDEM::describe_contact(contact));
   }
   check_order("as given");
+  check_periodic();
 }
 
 FixPeridemWall::~FixPeridemWall()
@@ -248,8 +249,25 @@ void FixPeridemWall::check_order(const char *when) const
   }
 }
 
+/* ----------------------------------------------------------------------
+   a wall on a periodic dimension would push nodes near its periodic image
+   across the seam (issue 9); LAMMPS's fix wall refuses it the same way.
+   Checked when defined and at each run (change_box may change boundaries).
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::check_periodic() const
+{
+  for (int w = 0; w < nwalls; w++)
+    if (walls[w].active && domain->periodicity[w / 2])
+      error->all(FLERR,
+                 "{}: wall {} is on a periodic dimension ({}); use boundary f, s or m in {} "
+                 "for walls",
+                 STYLE, FACES[w], "xyz"[w / 2], "xyz"[w / 2]);
+}
+
 void FixPeridemWall::init()
 {
+  check_periodic();
   if (contact_from_pair) take_contact_from_pair();
   for (int w = 0; w < nwalls; w++) {
     Wall &wall = walls[w];

@@ -83,6 +83,7 @@ class FixPeridemWall : public Fix {
   int parse_face(const char *word) const;
   peridem::WallBox make_box() const;
   double wall_area(int w) const;
+  void check_periodic() const;
   void check_order(const char *when) const;
   void take_contact_from_pair();
   void update_variable_walls();

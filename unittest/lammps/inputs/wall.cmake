@@ -6,7 +6,7 @@ peridem_add_example_test(wall_drop wall-drop in.wall_drop 1 2)
 # bad input gets a clear error naming the command and the value
 function(peridem_wall_error name wallargs regex)
   peridem_add_error_test(wall_${name} ${_in}/wall_error.in "${regex}"
-    -var wall "${wallargs}" -var nsteps 0)
+    -var wall "${wallargs}" -var nsteps 0 ${ARGN})
 endfunction()
 peridem_wall_error(order "ylo 2.0 yhi 1.0 Kn 1 Rc 0.5"
   "fix peridem/wall: wall ylo at 2 is not below wall yhi at 1")
@@ -42,6 +42,13 @@ peridem_wall_error(bad_servo "ylo 0.0 yhi 2.0 servo yhi 1.0 -1 0.5 Kn 1 Rc 0.5"
   "servo gain must be > 0, not -1")
 peridem_wall_error(shear_normal "ylo 0.0 shear ylo 0.1 0.2 0 Kn 1 Rc 0.5"
   "shear velocity of wall ylo must lie in the wall")
+# walls on periodic dimensions are refused (issue 9), in 2d and 3d
+peridem_wall_error(periodic_2d "xlo EDGE ylo 0.0 Kn 1 Rc 0.5"
+  "fix peridem/wall: wall xlo is on a periodic dimension \\(x\\); use boundary f, s or m in x"
+  -var bnd "p f p")
+peridem_wall_error(periodic_3d "ylo 0.0 zhi 0.4 Kn 1 Rc 0.5"
+  "fix peridem/wall: wall zhi is on a periodic dimension \\(z\\)"
+  -var dim 3 -var bnd "f f p")
 # a node completely past a wall (by more than Rc) ends the run by default
 peridem_add_error_test(wall_lost_node ${_in}/wall_error.in
   "atom 1 is 1.5 beyond wall yhi \\(more than Rc = 0.5\\): it crossed the wall"
@@ -49,11 +56,10 @@ peridem_add_error_test(wall_lost_node ${_in}/wall_error.in
 
 # Rc larger than the horizon: a warning (doc/fix_peridem_wall.rst), the run goes on
 add_test(NAME wall_rc_above_horizon_warns
-  COMMAND lmp_peridem -in ${_in}/wall_error.in -log none -var nsteps 0
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex
+          "WARNING: fix peridem/wall: contact radius Rc = 0.5 is larger than the horizon 0.3"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/wall_error.in -log none -var nsteps 0
           -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 0.3")
-set_tests_properties(wall_rc_above_horizon_warns PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: fix peridem/wall: contact radius Rc = 0.5 is larger than the horizon 0.3"
-  FAIL_REGULAR_EXPRESSION "ERROR")
 
 # 'contact pair': the wall takes the pair style's contact law, with the same
 # result as the keywords written out
