@@ -39,10 +39,10 @@ peridem_contact_error(mix_laws "types 1 and 2 use different damping or friction 
 
 # Rc larger than the horizon: a warning naming both values, the run goes on
 add_test(NAME contact_rc_above_horizon_warns
-  COMMAND lmp_peridem -in ${_in}/pair_contact_error.in -log none -var coeff "* * Kn 1 Rc 0.5 horizon 0.3")
-set_tests_properties(contact_rc_above_horizon_warns PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: pair_coeff: contact radius Rc = 0.5 is larger than the horizon 0.3"
-  FAIL_REGULAR_EXPRESSION "ERROR")
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex
+          "WARNING: pair_coeff: contact radius Rc = 0.5 is larger than the horizon 0.3"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/pair_contact_error.in -log none
+          -var coeff "* * Kn 1 Rc 0.5 horizon 0.3")
 # centroid_range: only with damping centroid, never below R_c, not for walls
 peridem_contact_error(centroid_range_without_centroid
   "pair_coeff: centroid_range 0.3 needs damping centroid eps_n C"
@@ -58,10 +58,9 @@ peridem_add_error_test(centroid_range_in_wall ${_in}/wall_error.in
 # centroid_range of unlike types without their own pair_coeff: the mean of
 # the two reaches (R_c where a type has no range), like R_c itself
 add_test(NAME contact_centroid_range_mixed
-  COMMAND lmp_peridem -in ${_in}/pair_contact_error.in -log none -echo none
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex
+          "peridem/contact 1 2: .*mixed from types 1 and 2.*grains touch below 0.25\\)"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/pair_contact_error.in -log none -echo none
           -var coeff "1 1 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_range 0.3"
           -var extra "pair_coeff 2 2 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-set_tests_properties(contact_centroid_range_mixed PROPERTIES
-  PASS_REGULAR_EXPRESSION "peridem/contact 1 2: .*mixed from types 1 and 2.*grains touch below 0.25\\)"
-  FAIL_REGULAR_EXPRESSION "ERROR")
