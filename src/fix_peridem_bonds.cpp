@@ -6,9 +6,13 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
+#include "fix_peridem_wall.h"
 #include "force.h"
+#include "lmp_peridem_topology.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 
 #include <algorithm>
@@ -25,7 +29,8 @@ enum { COUNTS, PARTNERS };
 /* ---------------------------------------------------------------------- */
 
 FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0)
+    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0),
+      escapes_deleted(0)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
   // one instance, the bond style's: a second one would count nothing
@@ -59,7 +64,7 @@ FixPeridemBonds::~FixPeridemBonds()
 
 int FixPeridemBonds::setmask()
 {
-  return PRE_FORCE | POST_FORCE | MIN_PRE_FORCE | MIN_POST_FORCE;
+  return PRE_EXCHANGE | PRE_FORCE | POST_FORCE | MIN_PRE_FORCE | MIN_POST_FORCE;
 }
 
 void FixPeridemBonds::init()
@@ -71,6 +76,41 @@ void FixPeridemBonds::init()
   for (int i = 0; i < atom->nlocal && !any; i++) any = nbroken[i] > 0.0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
   wd_section = any_all;
+  escapes_deleted = 0;
+  for (int f = 0; f < modify->nfix; f++) {
+    auto *wall = dynamic_cast<FixPeridemWall *>(modify->fix[f]);
+    if (wall && wall->deletes_lost()) escapes_deleted = 1;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   a node beyond a fixed ('f') box boundary is lost by LAMMPS at this
+   reneighbouring and its partners' bonds then name a missing atom ("Bond
+   atoms missing", issue 9): stop with the node and its grain named, unless
+   a fix peridem/wall with 'lost delete' removes such nodes with their bonds
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::setup_pre_exchange()
+{
+  pre_exchange();
+}
+
+void FixPeridemBonds::pre_exchange()
+{
+  if (escapes_deleted) return;
+  double **x = atom->x;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int face = PERIDEM::outside_fixed_boundary(domain, x[i]);
+    if (face < 0) continue;
+    static const char *const faces[] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
+    error->one(FLERR,
+               "atom {} of grain {} left the simulation box through {} at ({}, {}, {}) at step "
+               "{}: LAMMPS would lose it and its bonds. Enlarge the box, contain the grains "
+               "(fix peridem/wall), or delete escaping nodes with their bonds (fix peridem/wall "
+               "... lost delete)",
+               atom->tag[i], atom->molecule[i], faces[face], x[i][0], x[i][1], x[i][2],
+               update->ntimestep);
+  }
 }
 
 /* ----------------------------------------------------------------------

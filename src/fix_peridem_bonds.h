@@ -40,6 +40,8 @@ class FixPeridemBonds : public Fix {
   void post_force(int) override;
   void min_pre_force(int) override;
   void min_post_force(int) override;
+  void setup_pre_exchange() override;
+  void pre_exchange() override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -71,6 +73,10 @@ class FixPeridemBonds : public Fix {
   const double *broken_count() const { return nbroken; }
   const double *broken_z() const { return zbroken; }
 
+  // owned atom i lost an intact bond partner that was deleted (escaped
+  // node, fix peridem/wall lost delete): the bond counts as broken
+  void partner_deleted(int i) { nbroken[i] += 1.0; }
+
  private:
   double *nbroken, *zbroken;
   bigint broken_here; // bonds broken on this rank since the last post_force
@@ -78,7 +84,8 @@ class FixPeridemBonds : public Fix {
   // indices lost this step; they travel home by reverse communication and
   // leave the special lists there
   std::unordered_map<int, std::vector<tagint>> lost_partners;
-  int comm_mode; // which reverse communication is under way
+  int comm_mode;       // which reverse communication is under way
+  int escapes_deleted; // a fix peridem/wall deletes nodes leaving the box
 
   void forget_partner(int i, tagint partner);
   void adopt_data_file_damage();

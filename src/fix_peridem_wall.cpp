@@ -8,6 +8,8 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_peridem_wall.h"
+#include "fix_peridem_bonds.h"
+#include "lmp_peridem_topology.h"
 
 #include "lmp_peridem_parse.h"
 #include "force.h"
@@ -49,12 +51,13 @@ inline double outward(int w)
 ------------------------------------------------------------------------- */
 
 FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), nwalls(2 * domain->dimension), lost_error(1), servo_any(0), var_any(0),
-      in_setup(0), reduced(0), dissipated_local(0.0), lost_local(0)
+    : Fix(lmp, narg, arg), nwalls(2 * domain->dimension), lost_error(1), lost_delete(0),
+      deleted_total(0), servo_any(0), var_any(0), in_setup(0), reduced(0), dissipated_local(0.0),
+      lost_local(0)
 {
   scalar_flag = 1;
   vector_flag = 1;
-  size_vector = PER_WALL * nwalls + 2;
+  size_vector = PER_WALL * nwalls + 3;
   global_freq = 1;
   extscalar = 1;
   extvector = -1;
@@ -65,6 +68,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
   }
   extlist[PER_WALL * nwalls] = 0;
   extlist[PER_WALL * nwalls + 1] = 1;
+  extlist[PER_WALL * nwalls + 2] = 1;
   energy_global_flag = 1;
   virial_global_flag = virial_peratom_flag = 1;
   restart_global = 1;
@@ -150,7 +154,10 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       iarg += 2;
     } else if (key == "lost") {
       need(1, "lost");
-      lost_error = PERIDEM::choice(lmp, STYLE, "lost", arg[iarg + 1], {"warn", "error"});
+      const int mode =
+          PERIDEM::choice(lmp, STYLE, "lost", arg[iarg + 1], {"warn", "error", "delete"});
+      lost_error = mode == 1;
+      lost_delete = mode == 2;
       iarg += 2;
     } else {
       const int used = parser.consume(narg, arg, iarg);
@@ -192,7 +199,7 @@ FixPeridemWall::~FixPeridemWall()
 
 int FixPeridemWall::setmask()
 {
-  return POST_INTEGRATE | POST_FORCE | POST_RUN | MIN_POST_FORCE;
+  return POST_INTEGRATE | POST_FORCE | POST_RUN | MIN_POST_FORCE | (lost_delete ? PRE_EXCHANGE : 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -498,9 +505,49 @@ void FixPeridemWall::servo_control()
 
 /* ---------------------------------------------------------------------- */
 
+/* ----------------------------------------------------------------------
+   'lost delete' (issue 9): fragments may leave a container through an open
+   side in impacts. At each reneighbouring, before LAMMPS would lose them,
+   nodes whose whole contact disk lies beyond a wall (d <= -Rc) or that lie
+   beyond a fixed box boundary are deleted together with their bonds; the
+   partners count those bonds as broken (compute peridem/damage).
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::setup_pre_exchange()
+{
+  pre_exchange();
+}
+
+void FixPeridemWall::pre_exchange()
+{
+  if (!lost_delete) return;
+  update_variable_walls();
+  const peridem::WallBox box = make_box();
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  double **x = atom->x;
+  std::vector<int> doomed;
+  for (int i = 0; i < atom->nlocal; i++) {
+    bool gone = PERIDEM::outside_fixed_boundary(domain, x[i]) >= 0;
+    if (!gone && (mask[i] & groupbit)) {
+      const double Rc = contact_from_pair ? type_params[type[i]].Rc : contact.params.Rc;
+      for (int w = 0; w < nwalls && !gone; w++)
+        gone = box.active[w] && peridem::wall_distance(box, w, x[i]) <= -Rc;
+    }
+    if (gone) doomed.push_back(i);
+  }
+  const int ibonds = modify->find_fix(FixPeridemBonds::ID);
+  auto *bonds = ibonds < 0 ? nullptr : dynamic_cast<FixPeridemBonds *>(modify->fix[ibonds]);
+  deleted_total += PERIDEM::delete_nodes(lmp, doomed, [bonds](int i, tagint) {
+    if (bonds) bonds->partner_deleted(i);
+  });
+}
+
 void FixPeridemWall::post_run()
 {
-  if (lost_error) return;
+  if (lost_delete && comm->me == 0)
+    utils::logmesg(lmp, "{} {}: {} nodes deleted so far (lost delete)\n", STYLE, id, deleted_total);
+  if (lost_error || lost_delete) return;
   bigint all = 0;
   MPI_Allreduce(&lost_local, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all > 0 && comm->me == 0)
@@ -528,6 +575,7 @@ double FixPeridemWall::compute_vector(int n)
     return total[3 * w + (j - 3)];
   }
   reduce();
+  if (n == PER_WALL * nwalls + 2) return static_cast<double>(deleted_total);
   return n == PER_WALL * nwalls ? total[NLOST] : total[DISSIPATED];
 }
 

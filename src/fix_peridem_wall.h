@@ -44,6 +44,11 @@ class FixPeridemWall : public Fix {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
+  void setup_pre_exchange() override;
+  void pre_exchange() override;
+
+  // 'lost delete': nodes beyond a wall or a fixed box boundary are deleted
+  int deletes_lost() const { return lost_delete; }
 
   // entries of the global vector per wall, then the totals (0-based)
   static constexpr int PER_WALL = 6; // position, velocity, normal load, fx, fy, fz
@@ -68,7 +73,9 @@ class FixPeridemWall : public Fix {
   // type (pair_coeff I I), per atom type; empty otherwise
   bool contact_from_pair = false;
   std::vector<peridem::ContactParams> type_params;
-  int lost_error; // 1: a node beyond a wall ends the run, 0: counted and warned
+  int lost_error;       // 1: a node beyond a wall ends the run, 0: counted and warned
+  int lost_delete;      // 1: nodes beyond a wall or the box are deleted with their bonds
+  bigint deleted_total; // nodes deleted so far (lost delete), all ranks
   int servo_any, var_any;
   int in_setup;
 

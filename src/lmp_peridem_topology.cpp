@@ -5,10 +5,14 @@
 #include "lmp_peridem_topology.h"
 
 #include "atom.h"
+#include "atom_vec.h"
+#include "domain.h"
 #include "force.h"
 #include "lammps.h"
 #include "special.h"
 
+#include <algorithm>
+#include <functional>
 #include <mpi.h>
 
 using namespace LAMMPS_NS;
@@ -26,6 +30,87 @@ bigint finish_bond_edit(LAMMPS *lmp)
   Special special(lmp);
   special.build();
   return atom->nbonds;
+}
+
+int outside_fixed_boundary(const Domain *domain, const double *x)
+{
+  if (domain->triclinic) return -1;
+  for (int d = 0; d < domain->dimension; d++) {
+    // boundary 1 = f; s and m move the box, p wraps
+    if (domain->boundary[d][0] == 1 && x[d] < domain->boxlo[d]) return 2 * d;
+    if (domain->boundary[d][1] == 1 && x[d] >= domain->boxhi[d]) return 2 * d + 1;
+  }
+  return -1;
+}
+
+bigint delete_nodes(LAMMPS *lmp, std::vector<int> doomed,
+                    const std::function<void(int, tagint)> &lost_partner)
+{
+  Atom *atom = lmp->atom;
+  MPI_Comm world = lmp->world;
+  int nprocs = 1;
+  MPI_Comm_size(world, &nprocs);
+
+  // every rank needs the IDs of all deleted atoms: partners may be anywhere
+  std::vector<tagint> mine;
+  for (int i : doomed) mine.push_back(atom->tag[i]);
+  const int nmine = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  const int ngone = displs[nprocs - 1] + counts[nprocs - 1];
+  if (ngone == 0) return 0;
+  std::vector<tagint> gone(ngone);
+  MPI_Allgatherv(mine.data(), nmine, MPI_LMP_TAGINT, gone.data(), counts.data(), displs.data(),
+                 MPI_LMP_TAGINT, world);
+  std::sort(gone.begin(), gone.end());
+  auto is_gone = [&](tagint t) { return std::binary_search(gone.begin(), gone.end(), t); };
+
+  std::vector<char> dies(atom->nlocal, 0);
+  for (int i : doomed) dies[i] = 1;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (dies[i]) continue;
+    int &nb = atom->num_bond[i];
+    for (int m = nb - 1; m >= 0; m--) {
+      if (!is_gone(atom->bond_atom[i][m])) continue;
+      atom->bond_atom[i][m] = atom->bond_atom[i][nb - 1];
+      atom->bond_type[i][m] = atom->bond_type[i][nb - 1];
+      nb--;
+    }
+    // the 1-2 special list names every intact bond partner, wherever the
+    // bond is stored (newton_bond on stores it once)
+    int *nspecial = atom->nspecial[i];
+    tagint *special = atom->special[i];
+    for (int k = 0; k < nspecial[0];) {
+      if (!is_gone(special[k])) {
+        k++;
+        continue;
+      }
+      lost_partner(i, special[k]);
+      for (int m = k; m < nspecial[2] - 1; m++) special[m] = special[m + 1];
+      nspecial[0]--;
+      nspecial[1]--;
+      nspecial[2]--;
+    }
+  }
+
+  // remove the atoms (highest index first: the last atom moves into the hole)
+  std::sort(doomed.begin(), doomed.end(), std::greater<int>());
+  for (int i : doomed) {
+    atom->avec->copy(atom->nlocal - 1, i, 1);
+    atom->nlocal--;
+  }
+  bigint nlocal = atom->nlocal, nbonds = 0;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  for (int i = 0; i < atom->nlocal; i++) nbonds += atom->num_bond[i];
+  MPI_Allreduce(&nbonds, &atom->nbonds, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (!lmp->force->newton_bond) atom->nbonds /= 2;
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+  return ngone;
 }
 
 } // namespace PERIDEM

@@ -12,15 +12,34 @@
 
 #include "lmptype.h"
 
+#include <functional>
+#include <vector>
+
 namespace LAMMPS_NS {
+class Domain;
 class LAMMPS;
-}
+} // namespace LAMMPS_NS
 
 namespace PERIDEM {
 
 // Recounts atom->nbonds on all ranks (bonds stored twice when newton_bond
 // is off count once) and rebuilds the special lists. Returns the new total.
 LAMMPS_NS::bigint finish_bond_edit(LAMMPS_NS::LAMMPS *lmp);
+
+// The face (0..5 = xlo xhi ylo yhi zlo zhi) of a fixed ('f') box boundary
+// that position x lies beyond, where LAMMPS would lose the atom at the next
+// reneighbouring; -1 if none (or a triclinic box, not checked).
+int outside_fixed_boundary(const LAMMPS_NS::Domain *domain, const double *x);
+
+// Deletes the owned atoms at the local indices `doomed` (every rank calls it,
+// with its own list) together with their bonds: bonds stored on partners and
+// the partners' 1-2 special entries go too, on every rank, and
+// lost_partner(i, tag) is called once for each owned atom i that had an
+// intact bond to a deleted atom. Recounts atoms and bonds and rebuilds the
+// atom map. Call it where atoms may be deleted (pre_exchange, as fix
+// evaporate does). Returns the number of atoms deleted on all ranks.
+LAMMPS_NS::bigint delete_nodes(LAMMPS_NS::LAMMPS *lmp, std::vector<int> doomed,
+                               const std::function<void(int, LAMMPS_NS::tagint)> &lost_partner);
 
 } // namespace PERIDEM
 

@@ -24,3 +24,19 @@ foreach(_np 1 2)
             -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_np${_np}
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
+
+# nodes leaving the box (issue 9, item 4): a strip thrown out of an open
+# container is deleted with its bonds and counted with 'lost delete' (1 and
+# 2 ranks); without it the run stops naming the node and its grain (before:
+# LAMMPS's "Lost atoms" / "Bond atoms missing")
+foreach(_np 1 2)
+  add_test(NAME escaped_nodes_deleted_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np}
+            $<TARGET_FILE:lmp_peridem> -in escape.in -log none -echo none
+    WORKING_DIRECTORY ${_in}/breakage)
+endforeach()
+add_test(NAME error.escaped_node_named
+  COMMAND ${PERIDEM_RUN}/expect_error.sh
+          "atom [0-9]+ of grain 1 left the simulation box through yhi at .*lost delete"
+          $<TARGET_FILE:lmp_peridem> -in escape.in -log none -echo none -var lost warn
+  WORKING_DIRECTORY ${_in}/breakage)
