@@ -11,3 +11,9 @@ add_test(NAME contact_collision_energy
 # the quick-start job runs (one rank: after 30000 steps of contacts the
 # 2-rank run differs from it at 1e-9, rounding amplified by the contacts)
 peridem_add_example_test(pile pile in.pile 1)
+
+# pair_style peridem/contact forces on 2 ranks equal those of 1 rank after
+# run 0, with newton_pair on and off (issue 9, item 6)
+add_test(NAME PairContact.ranks_match_one_rank_np2
+  COMMAND ${PERIDEM_RUN}/mpirun.sh 2 $<TARGET_FILE:test_pair_peridem_contact>
+          --gtest_filter=*RanksMatchOneRank*)
