@@ -6,12 +6,16 @@ Runs in.restitution for eps_n = 1, 0.95, 0.9, 0.85, 0.8 (damping centroid, C = 1
       closer than R_c, i.e. from the moment the contact force starts;
   (b) with the dashpot switched on 0.6 % of R_c (0.8 micrometres) earlier (pair_coeff
       centroid_range 1.006 R_c); the seed's code also switches it on before the contact
-      (centres closer than R_1 + R_2 + 1.01 R_c).
+      (centres closer than R_1 + R_2 + 1.01 R_c). 1.006 is a CALIBRATION: it was fitted to
+      the seed's Table 2, so agreement with that table validates nothing.
 Writes restitution.dat (eps_n, seed C_R, ours (a), ours (b)) and restitution.png (if
 matplotlib is installed), and checks when --check is given (exit 1 on failure):
-  C_R(1) within 1% of 1, C_R strictly decreasing with eps_n in both series, (a) within
-  --tol of the values recorded below and never below the seed's minus --tol, (b) within
-  --seed-tol of the seed's Table 2.
+  independent bounds: C_R(1) within 1% of 1 (no damping: only the energy left as grain
+  vibration is missing), C_R strictly decreasing with eps_n in both series, (b) <= (a)
+  for every eps_n (the earlier dashpot acts over a longer time, so it dissipates more),
+  (a) never below the seed's minus --tol (the seed's dashpot also starts earlier);
+  calibration: (b) within --seed-tol of the seed's Table 2 (the table it was fitted to;
+  this only guards the calibration against changes).
 
 usage: run_restitution.py [--lmp PATH] [--np N] [--potentials DIR] [--check] [--tol T]
                           [-- extra lmp arguments, e.g. -var dt 2.5e-8]
@@ -24,8 +28,7 @@ import sys
 
 EPS = [1.0, 0.95, 0.9, 0.85, 0.8]
 SEED = [1.0, 0.946, 0.893, 0.845, 0.796]      # Table 2 of the seed
-OURS_REF = [0.9979, 0.9760, 0.9630, 0.9423, 0.9278]  # recorded (a), see README.md
-ONSET = 1.006                                  # (b): centroid_range = ONSET x R_c
+ONSET = 1.006                                  # (b): centroid_range = ONSET x R_c (calibrated)
 
 here = os.path.dirname(os.path.abspath(__file__))
 ap = argparse.ArgumentParser()
@@ -108,16 +111,20 @@ if a.check:
         for k in range(1, len(EPS)):
             if not series[k] < series[k - 1]:
                 bad.append("%s C_R does not decrease from eps_n %g to %g" % (name, EPS[k - 1], EPS[k]))
-    for e, o, r in zip(EPS, ours, OURS_REF):
-        if abs(o - r) > a.tol:
-            bad.append("(a) C_R(%g) = %g differs from the recorded %g by more than %g" % (e, o, r, a.tol))
+    for e, o, b in zip(EPS, ours, early):
+        if b > o + 1e-12 or (e < 1.0 and not b < o):
+            bad.append("(b) C_R(%g) = %g is not below (a) %g: the earlier dashpot must dissipate "
+                       "more" % (e, b, o))
     for e, o, s in zip(EPS, ours, SEED):
         if o < s - a.tol:
             bad.append("(a) C_R(%g) = %g damps more than the seed's %g" % (e, o, s))
     for e, b, s in zip(EPS, early, SEED):
         if abs(b - s) > a.seed_tol:
-            bad.append("(b) C_R(%g) = %g differs from the seed's %g by more than %g" % (e, b, s, a.seed_tol))
+            bad.append("(b) C_R(%g) = %g differs from the seed's %g by more than %g (calibration "
+                       "of centroid_range %g lost)" % (e, b, s, a.seed_tol, ONSET))
     if bad:
         print("PERIDEM-FAIL " + "; ".join(bad))
         sys.exit(1)
-    print("PERIDEM-PASS restitution trend, and the seed's Table 2 to %g with the early onset" % a.seed_tol)
+    print("PERIDEM-PASS restitution bounds (C_R(1) = 1, decreasing, (b) <= (a), (a) not below "
+          "the seed); calibration: the seed's Table 2 to %g with centroid_range %g R_c"
+          % (a.seed_tol, ONSET))

@@ -332,6 +332,36 @@ TEST_F(FixPeridemWallTest, ShearDragsGrain)
   EXPECT_LT(wall_entry(2, 3), 0.0); // the grain holds the floor back
 }
 
+// The friction of a sheared floor on a sliding block is mu N (issue 9): a
+// square block rests on a floor that slides at 0.5 m/s; while the whole
+// contact slips, the tangential wall force is mu times the normal load
+// (seed eq. 4.3, no damping), for two values of mu, and drags the block along.
+TEST_F(FixPeridemWallTest, ShearFrictionIsMuTimesLoad)
+{
+  for (double mu : {0.5, 0.2}) {
+    std::string setup = grain(0.0, 0.0);
+    const std::string disk = "region          grain sphere 0 0 0 1.0e-3 units box";
+    const size_t at = setup.find(disk);
+    ASSERT_NE(at, std::string::npos);
+    setup.replace(at, disk.size(),
+                  "region          grain block -0.5e-3 0.5e-3 0.1e-3 1.1e-3 -1e-4 1e-4 units box");
+    command("clear");
+    command(setup);
+    // bottom nodes at y = 0.15 mm, 0.14 mm from the floor: inside R_c = 0.1425 mm
+    command("fix wall all peridem/wall ylo 0.01e-3 shear ylo 0.5 0 0 Kn 2.5e22 Rc_factor 0.95 "
+            "spacing 0.15e-3 friction regularized " +
+            std::to_string(mu) +
+            "\nfix grav all gravity 1e4 vector 0 -1 0\n"
+            "run 1000 post no");
+    const double load = wall_entry(2, 2), fx = wall_entry(2, 3);
+    std::printf("[ measure  ] mu %.2g: floor load %.6g, floor fx %.6g, ratio %.12g\n", mu, load, fx,
+                -fx / load);
+    ASSERT_GT(load, 0.0);
+    EXPECT_NEAR(-fx / load, mu, 1e-9 * mu);
+    EXPECT_GT(equal("vcm(all,x)"), 0.0);
+  }
+}
+
 // Servo and moving wall state goes through write_restart/read_restart.
 TEST_F(FixPeridemWallTest, RestartKeepsWallState)
 {

@@ -6,10 +6,10 @@
 peridem_add_example_test(restitution restitution in.restitution 1 2)
 
 # the restitution study at the seed's resolution (h = 0.1423 mm, 9 runs of
-# about 2 s): C_R(1) within 1% of 1, C_R decreasing with eps_n; as eq. 27
-# is written, values within 0.01 of the recorded ones and not below the
-# seed's; with the dashpot switched on at 1.006 R_c (centroid_range), the
-# seed's Table 2 to 0.005 (see examples/restitution/README.md)
+# about 2 s). Independent bounds: C_R(1) within 1% of 1, C_R decreasing
+# with eps_n, the earlier dashpot (centroid_range 1.006 R_c) below eq. 27 as
+# written, which is not below the seed's. Calibration (not a validation:
+# 1.006 was fitted to it): the seed's Table 2 to 0.005 with 1.006 R_c.
 add_test(NAME restitution_trend
   COMMAND ${PERIDEM_RUN}/expect_pass.sh python3 ${PROJECT_SOURCE_DIR}/examples/restitution/run_restitution.py
           --lmp $<TARGET_FILE:lmp_peridem> --potentials ${PROJECT_SOURCE_DIR}/potentials
