@@ -516,6 +516,15 @@ void PairPeridemContact::init_style()
                "{} requires special_bonds lj weights 1.0 for 1-3 and 1-4 pairs: they are nodes "
                "that may touch (use special_bonds lj/coul 0.0 1.0 1.0)",
                STYLE);
+  // 'special_bonds lj 0.0 1.0 1.0' leaves the coul weights at 0, and LAMMPS
+  // then builds 1-3 and 1-4 lists of every node's horizon neighbours' partners
+  // (46 s for 2197 nodes, developer notes): refuse it (issue 9)
+  if (atom->nbonds > 0 && (force->special_coul[2] != 1.0 || force->special_coul[3] != 1.0))
+    error->all(FLERR,
+               "{} requires special_bonds coul weights 1.0 for 1-3 and 1-4 pairs too (now {} "
+               "and {}): 'special_bonds lj 0.0 1.0 1.0' leaves them at 0 and LAMMPS builds huge "
+               "1-3/1-4 lists (use special_bonds lj/coul 0.0 1.0 1.0)",
+               STYLE, force->special_coul[2], force->special_coul[3]);
   bool dissipative = false;
   centroid_on = 0;
   for (int i = 1; i <= atom->ntypes; i++)

@@ -16,8 +16,12 @@ constexpr double kPi = 3.14159265358979323846;
 
 void requirePositive(double v, const char *what)
 {
-  if (!(v > 0.0) || !std::isfinite(v))
-    throw GeometryError(std::string("shape parameter ") + what + " must be positive");
+  if (!(v > 0.0) || !std::isfinite(v)) {
+    std::ostringstream value; // the value as the user wrote it (up to 6 digits)
+    value << v;
+    throw GeometryError(std::string("shape parameter ") + what + " must be positive, not " +
+                        value.str());
+  }
 }
 
 void requireCount(int n, int minimum, const char *what)

@@ -2,6 +2,7 @@
 #include "peridem_material.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -169,6 +170,17 @@ std::vector<std::vector<Token>> logical_lines(const std::string &text, const std
   std::string line;
   while (std::getline(in, line)) {
     ++lineno;
+    // a NUL byte would cut every later message short (C strings): name it
+    for (size_t c = 0; c < line.size(); ++c) {
+      const auto ch = static_cast<unsigned char>(line[c]);
+      if (ch < 0x20 && ch != '\t' && ch != '\r') {
+        char code[8];
+        std::snprintf(code, sizeof(code), "0x%02x", ch);
+        fail(source, lineno,
+             "control character " + std::string(code) + (ch == 0 ? " (NUL)" : "") + " at column " +
+                 std::to_string(c + 1) + ": not a text file?");
+      }
+    }
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
     std::istringstream words(line);

@@ -185,28 +185,59 @@ WallRegion ball_edge(double R, double a, double b)
    single-wall potential U(d) = K_n V int_d^R (R |S(s)| - M(s)) ds
 ------------------------------------------------------------------------------------------ */
 
+namespace {
+
+// F(T) = int_0^T f(t) sin t dt with f(t) = t - sin t cos t - 2/3 sin^3 t, so that the 2D
+// single-wall potential is U = K_n V R^4 F(theta), theta = acos(d/R) (substitute s = R cos t
+// in int_d^R (R|S(s)| - M(s)) ds, |S| = R^2 (t - sin t cos t), M = 2/3 R^3 sin^3 t).
+// F(T) = T^7/35 - 13 T^9/1260 + ...: the closed form cancels to nothing near d = R (issue 9:
+// -5e-10 per node where the value is 1e-46), so small T use the power series, whose
+// coefficients follow from writing f sin t as a sum of sines and cosines of t, 2t, 3t, 4t:
+//   F = sum_k a_k T^(2k+1), a_k = (-1)^k/(2k+1)! [1 - (2k+1) - 1/4 + 3^(2k+1)/12
+//                                               + 2^(2k+1)/6 - 4^(2k+1)/48],  k >= 3
+// (a_0 = a_1 = a_2 = 0 exactly).
+double wall_potential_2d_F(double T)
+{
+  if (T < 1.0) {
+    double sum = 0.0, fact = 5040.0;              // (2k+1)! for k = 3
+    double p2 = 128.0, p3 = 2187.0, p4 = 16384.0; // 2^(2k+1), 3^(2k+1), 4^(2k+1)
+    double Tp = std::pow(T, 7), sign = -1.0;
+    for (int k = 3; k < 40; ++k) {
+      const double n = 2.0 * k + 1.0;
+      const double a = sign / fact * (1.0 - n - 0.25 + p3 / 12.0 + p2 / 6.0 - p4 / 48.0);
+      const double term = a * Tp;
+      sum += term;
+      if (std::fabs(term) <= 1e-17 * std::fabs(sum)) break;
+      fact *= (n + 1.0) * (n + 2.0);
+      p2 *= 4.0;
+      p3 *= 9.0;
+      p4 *= 16.0;
+      Tp *= T * T;
+      sign = -sign;
+    }
+    return sum;
+  }
+  // closed form (loses at most about two digits for T >= 1)
+  const double s1 = std::sin(T), s2 = std::sin(2.0 * T), s3 = std::sin(3.0 * T),
+               s4 = std::sin(4.0 * T);
+  return s1 - T * std::cos(T) - 0.25 * (s1 - s3 / 3.0) - 0.25 * T + s2 / 6.0 - s4 / 48.0;
+}
+
+} // namespace
+
 double wall_potential(int dimension, double Kn, double R, double vol, double d)
 {
   if (d >= R) return 0.0;
   d = std::max(d, -R);
-  double IA, IM; // int_d^R |S| ds and int_d^R M ds
+  const double h = R - d; // exact near d = R
   if (dimension == 2) {
-    const double s2 = (R - d) * (R + d), s = std::sqrt(s2);
-    IA = R * R * s - R * R * d * std::acos(d / R) - s2 * s / 3.0;
-    auto P = [R](double x) {
-      const double sx = std::sqrt(std::max(0.0, R * R - x * x));
-      return x / 8.0 * (5.0 * R * R - 2.0 * x * x) * sx +
-             3.0 * R * R * R * R / 8.0 * std::asin(std::clamp(x / R, -1.0, 1.0));
-    };
-    IM = 2.0 / 3.0 * (P(R) - P(d));
-  } else {
-    const double h = R - d;
-    IA = kPi / 3.0 * (R * h * h * h - 0.25 * h * h * h * h);
-    const double R2 = R * R, d2 = d * d;
-    IM = 0.25 * kPi *
-         (8.0 / 15.0 * R2 * R2 * R - (R2 * R2 * d - 2.0 / 3.0 * R2 * d2 * d + d2 * d2 * d / 5.0));
+    // theta = acos(d/R) = 2 asin(sqrt(h/2R)), accurate for small h
+    const double theta = 2.0 * std::asin(std::min(1.0, std::sqrt(0.5 * h / R)));
+    return Kn * vol * R * R * R * R * wall_potential_2d_F(theta);
   }
-  return Kn * vol * (R * IA - IM);
+  // 3D: R int_d^R |S| ds - int_d^R M ds = pi h^4 (R/6 - h/20) with h = R - d: the
+  // polynomial in d of the closed form, rewritten in h without cancellation (issue 9)
+  return Kn * vol * kPi * h * h * h * h * (R / 6.0 - h / 20.0);
 }
 
 /* ---------------------------------------------------------------------------------------

@@ -274,6 +274,12 @@ TEST(Material, BadFilesGiveClearErrors)
   for (const Case &c : cases) EXPECT_CONTAINS(read_error(c.file, c.text), c.expect) << c.file;
   EXPECT_EQ(read_error("fine.peridem", u + ok + "\n"), "");
   EXPECT_CONTAINS(read_error("zero_bytes.peridem", ""), "zero_bytes.peridem: no material defined");
+  // a NUL byte is named, and the message goes on after it (issue 9)
+  const std::string nul = u + "material X density=1" + std::string(1, '\0') + " E=1 Gc=1\n";
+  const std::string msg = read_error("nul.peridem", nul);
+  EXPECT_CONTAINS(msg,
+                  "nul.peridem:2: control character 0x00 (NUL) at column 21: not a text file?");
+  EXPECT_EQ(msg.find('\0'), std::string::npos);
   try {
     read_material_file("/nonexistent/dir/none.peridem");
     FAIL() << "no exception";

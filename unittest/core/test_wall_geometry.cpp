@@ -327,6 +327,46 @@ TEST(WallGeometry2D, SingleWallForceIsMinusGradientOfPotential)
     }
 }
 
+// The single-wall potential against a quadrature of its definition (away from the edge),
+// and near d = R against the leading terms of its expansion (issue 9: the closed form gave
+// -5e-10 per node there); it is continuous where the 2D evaluation switches to the series.
+TEST(WallGeometry2D, SingleWallPotentialAccurateUpToTheEdge)
+{
+  const double Kn = 2e4, R = 0.1, V = 0.003;
+  for (int dim : {2, 3})
+    for (double t : {-1.0, -0.5, 0.0, 0.5, 0.9}) {
+      // composite Simpson of int_d^R (R|S(s)| - M(s)) ds
+      const double d = t * R;
+      const int n = 20000;
+      const double step = (R - d) / n;
+      double sum = 0.0;
+      for (int k = 0; k <= n; ++k) {
+        const double s = d + k * step;
+        const WallRegion r = dim == 2 ? disk_segment(R, s) : ball_cap(R, s);
+        const double w = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+        sum += w * (R * r.area - r.moment[0]);
+      }
+      const double quad = Kn * V * sum * step / 3.0;
+      EXPECT_NEAR(wall_potential(dim, Kn, R, V, d), quad, 1e-9 * quad) << dim << " " << t;
+    }
+  for (double eta : {1e-3, 1e-6, 1e-9, 1e-12}) { // eta = (R - d)/R
+    const double d = R * (1.0 - eta);
+    const double th = 2.0 * std::asin(std::sqrt(0.5 * (R - d) / R)); // d as represented
+    const double u2 =
+        Kn * V * std::pow(R, 4) * (std::pow(th, 7) / 35.0 - 13.0 * std::pow(th, 9) / 1260.0);
+    EXPECT_GT(wall_potential(2, Kn, R, V, d), 0.0) << eta;
+    EXPECT_NEAR(wall_potential(2, Kn, R, V, d), u2, 1e-6 * u2) << eta;
+    const double h = R - d, u3 = Kn * V * 3.14159265358979323846 * std::pow(h, 4) * R / 6.0;
+    EXPECT_GT(wall_potential(3, Kn, R, V, d), 0.0) << eta;
+    // leading term pi R h^4/6; the next, -pi h^5/20, is 0.3 eta of it
+    EXPECT_NEAR(wall_potential(3, Kn, R, V, d), u3, 0.31 * eta * u3 + 1e-14 * u3) << eta;
+  }
+  const double d1 = R * std::cos(1.0);
+  const double below = wall_potential(2, Kn, R, V, d1 * (1.0 + 1e-12));
+  const double above = wall_potential(2, Kn, R, V, d1 * (1.0 - 1e-12));
+  EXPECT_NEAR(below, above, 1e-11 * above);
+}
+
 TEST(WallGeometry2D, WallForceUsesContactLawAndReaction)
 {
   WallBox box;

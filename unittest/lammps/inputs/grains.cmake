@@ -40,6 +40,9 @@ peridem_add_error_test(grains_bonds_per_atom ${_g}/grain_box.in
 peridem_add_error_test(grains_unknown_keyword ${_g}/grain_box.in
   "create_peridem_grains: unknown keyword or shape parameter 'radius2'"
   -var grain "disk radius2 1 ${_ok}")
+peridem_add_error_test(grains_negative_radius ${_g}/grain_box.in
+  "create_peridem_grains: .*shape parameter radius must be positive, not -1"
+  -var grain "disk radius -1 ${_ok}")
 peridem_add_error_test(grains_no_density ${_g}/grain_box.in
   "create_peridem_grains: no density"
   -var grain "disk spacing 0.1 horizon 0.3 at 0 0 0")

@@ -30,6 +30,9 @@ peridem_contact_error(special_12 "requires special_bonds lj 0.0 for 1-2 pairs"
   -var special "lj/coul 1.0 1.0 1.0" -var coeff "* * ${_ok}")
 peridem_contact_error(special_13 "requires special_bonds lj weights 1.0 for 1-3 and 1-4 pairs"
   -var special "lj/coul 0.0 0.0 1.0" -var coeff "* * ${_ok}")
+peridem_contact_error(special_lj_only
+  "requires special_bonds coul weights 1.0 for 1-3 and 1-4 pairs too \\(now 0 and 0\\)"
+  -var special "lj 0.0 1.0 1.0" -var coeff "* * ${_ok}")
 peridem_contact_error(self_value "pair_style peridem/contact: self must be yes or no, not maybe"
   -var settings "self maybe" -var coeff "* * ${_ok}")
 peridem_contact_error(unknown_keyword "pair_coeff: unknown keyword stiffness"
