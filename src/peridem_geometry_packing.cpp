@@ -394,11 +394,11 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
     throw GeometryError("packing did not converge in " + std::to_string(opt.max_iterations) +
                         " iterations");
   if (H > Hmax * (1.0 + 1e-12))
-    throw GeometryError(
-        "the jammed bed of " + std::to_string(N) + " disks is " + str(H * L) +
-        " high, more than the container's " + str(Hmax * L) + " (packing fraction " +
-        str(volume / (base * H * L)) +
-        " would be needed in the whole container: " + str(volume / (base * Hmax * L)) + ")");
+    throw GeometryError("the jammed bed of " + std::to_string(N) + " disks is " + str(H * L) +
+                        " high, more than the container's " + str(Hmax * L) +
+                        " (jammed packing fraction " + str(volume / (base * H * L)) +
+                        "; filling the container would need " + str(volume / (base * Hmax * L)) +
+                        ")");
 
   Packing out;
   out.dimension = D;
