@@ -145,3 +145,67 @@ TEST_F(CreatePeridemBed, BedFileLinesAreTheJammedDisksShrunkByHalfRc)
   s2 << f2.rdbuf();
   EXPECT_EQ(s1.str(), s2.str());
 }
+
+TEST_F(CreatePeridemBed, MeshGrainsFillTheirSecurityDisks)
+{
+  // a Gmsh grain (unit square with a hole): its corners are on the smallest
+  // enclosing circle, so each grain reaches its disk's radius exactly
+  const std::string dir = scratch();
+  command(bed_setup(dir, "mesh 1"));
+  const auto bed = read_bed(dir + "bed.txt");
+  const std::string mesh =
+      std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/square_hole_v22.msh";
+  command("create_peridem_grains 1 gmsh " + mesh + " horizon 0.5 density 1 label mesh positions " +
+          dir + "bed.txt");
+  Atom *atom = lmp->atom;
+  std::map<tagint, double> reach;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const Line &b = bed[atom->molecule[i] - 1];
+    const double d = std::hypot(atom->x[i][0] - b.x, atom->x[i][1] - b.y);
+    reach[atom->molecule[i]] = std::max(reach[atom->molecule[i]], d);
+  }
+  ASSERT_EQ(reach.size(), bed.size());
+  for (const auto &kv : reach) EXPECT_NEAR(kv.second, bed[kv.first - 1].r, 1e-12);
+}
+
+TEST_F(CreatePeridemBed, SpheresAndBoxesIn3d)
+{
+  // a 3d bed: spheres and boxes inscribed in their security spheres, R_c apart
+  const std::string dir = scratch();
+  command("units lj\ndimension 3\nboundary f f f\natom_style peridem\natom_modify map array\n"
+          "region box block -0.5 6.5 -0.5 6.5 -0.5 20.5\n"
+          "create_box 2 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 0\n"
+          "special_bonds lj/coul 0.0 1.0 1.0\n"
+          "create_peridem_bed " +
+          dir +
+          "bed.txt count 40 radius uniform 0.8 1.1 seed 3 box 0 6 0 6 0 20 contact_radius 0.1 "
+          "labels sphere 1 box 1");
+  const auto bed = read_bed(dir + "bed.txt");
+  ASSERT_EQ(bed.size(), 40u);
+  command("create_peridem_grains 1 sphere spacing 0.25 horizon 0.6 density 1 positions " + dir +
+          "bed.txt");
+  command("create_peridem_grains 2 box spacing 0.25 horizon 0.6 density 1 positions " + dir +
+          "bed.txt");
+  std::vector<Line> by_grain;
+  for (const char *shape : {"sphere", "box"})
+    for (const auto &b : bed)
+      if (b.label == shape) by_grain.push_back(b);
+  Atom *atom = lmp->atom;
+  ASSERT_GT(atom->nlocal, 0);
+  double closest = 1e30, wall = 1e30;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const Line &b = by_grain[atom->molecule[i] - 1];
+    EXPECT_LE(std::sqrt(std::pow(atom->x[i][0] - b.x, 2) + std::pow(atom->x[i][1] - b.y, 2) +
+                        std::pow(atom->x[i][2] - b.z, 2)),
+              b.r * (1 + 1e-12));
+    wall = std::min(
+        {wall, atom->x[i][0], 6 - atom->x[i][0], atom->x[i][1], 6 - atom->x[i][1], atom->x[i][2]});
+    for (int j = 0; j < i; j++)
+      if (atom->molecule[j] != atom->molecule[i])
+        closest = std::min(closest, std::sqrt(std::pow(atom->x[i][0] - atom->x[j][0], 2) +
+                                              std::pow(atom->x[i][1] - atom->x[j][1], 2) +
+                                              std::pow(atom->x[i][2] - atom->x[j][2], 2)));
+  }
+  EXPECT_GE(closest, Rc);
+  EXPECT_GE(wall, Rc);
+}
