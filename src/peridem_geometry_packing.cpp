@@ -57,6 +57,8 @@ class CellGrid {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < np; i++) order[fill[cellOf[i]]++] = i;
   }
+  // point indices sorted by cell (after build)
+  const std::vector<std::size_t> &sorted() const { return order; }
   template <class F> void forEachPair(F &&f) const
   {
     // half stencil: the cell itself (j > i) and the neighbours "after" it
@@ -185,6 +187,190 @@ std::vector<double> drawRadii(const RadiusDistribution &dist, std::size_t n, std
   return r;
 }
 
+/* FIRE + barostat state of packSpheres (lengths in mean radii) */
+struct Minimiser {
+  double lo[3], hi[3];
+  double H, alpha, amax, area;
+  int max_iterations;
+
+  // x: positions in, jammed positions out (original order); returns iterations
+  template <int D>
+  int run(std::vector<std::array<double, 3>> &xin, const std::vector<double> &ain,
+          const std::vector<double> &rin)
+  {
+    constexpr int top = D - 1;
+    const std::size_t N = xin.size();
+    // working arrays, reordered by cell at each list build for locality
+    std::vector<double> x(D * N), v(D * N, 0.0), f(D * N), xb(D * N), a(ain), rr(rin);
+    std::vector<std::size_t> id(N);
+    for (std::size_t i = 0; i < N; i++) {
+      id[i] = i;
+      for (int d = 0; d < D; d++) x[D * i + d] = xin[i][d];
+    }
+
+    // Verlet list from a cell grid; the list's reference positions follow the
+    // affine part of the motion, so only the non-affine motion and the strain
+    // since the build eat into the skin
+    const double skin = 0.3;
+    std::vector<std::uint32_t> pairs;
+    double strain = 1.0;
+    std::vector<std::array<double, 3>> cellx(N);
+    std::vector<double> tmp;
+    auto permute = [&](std::vector<double> &arr, int width, const std::vector<std::size_t> &order) {
+      tmp.resize(arr.size());
+      for (std::size_t k = 0; k < N; k++)
+        for (int d = 0; d < width; d++) tmp[width * k + d] = arr[width * order[k] + d];
+      arr.swap(tmp);
+    };
+    auto rebuild = [&]() {
+      double ghi[3] = {hi[0], hi[1], hi[2]};
+      ghi[top] = H;
+      CellGrid grid(D, lo, ghi, 2.0 * amax + skin);
+      for (std::size_t i = 0; i < N; i++)
+        for (int d = 0; d < D; d++) cellx[i][d] = x[D * i + d];
+      grid.build(cellx);
+      // reorder every array by cell
+      const std::vector<std::size_t> &order = grid.sorted();
+      permute(x, D, order);
+      permute(v, D, order);
+      permute(a, 1, order);
+      permute(rr, 1, order);
+      std::vector<std::size_t> nid(N);
+      for (std::size_t k = 0; k < N; k++) nid[k] = id[order[k]];
+      id.swap(nid);
+      std::vector<std::size_t> rank(N);
+      for (std::size_t k = 0; k < N; k++) rank[order[k]] = k;
+      pairs.clear();
+      grid.forEachPair([&](std::size_t i0, std::size_t j0) {
+        const std::size_t i = rank[i0], j = rank[j0];
+        double d2 = 0.0;
+        for (int d = 0; d < D; d++)
+          d2 += (x[D * i + d] - x[D * j + d]) * (x[D * i + d] - x[D * j + d]);
+        const double c = a[i] + a[j] + skin;
+        if (d2 < c * c) {
+          pairs.push_back(static_cast<std::uint32_t>(std::min(i, j)));
+          pairs.push_back(static_cast<std::uint32_t>(std::max(i, j)));
+        }
+      });
+      xb = x;
+      strain = 1.0;
+    };
+
+    // forces and vertical virial stress; returns the largest overlap ratio
+    // (overlap of the a_i over alpha r; > 1 means the true disks overlap)
+    double Pint = 0.0;
+    auto forces = [&]() {
+      std::fill(f.begin(), f.end(), 0.0);
+      double virial = 0.0, worst = 0.0;
+      for (std::size_t p = 0; p < pairs.size(); p += 2) {
+        const std::size_t i = pairs[p], j = pairs[p + 1];
+        double dx[D], d2 = 0.0;
+        for (int d = 0; d < D; d++) {
+          dx[d] = x[D * j + d] - x[D * i + d];
+          d2 += dx[d] * dx[d];
+        }
+        const double sum = a[i] + a[j];
+        if (d2 >= sum * sum) continue;
+        const double dist = std::sqrt(d2), delta = sum - dist, k = delta / std::max(dist, 1e-300);
+        for (int d = 0; d < D; d++) {
+          f[D * i + d] -= k * dx[d];
+          f[D * j + d] += k * dx[d];
+        }
+        virial += k * dx[top] * dx[top];
+        worst = std::max(worst, delta / (alpha * (rr[i] + rr[j])));
+      }
+      for (std::size_t i = 0; i < N; i++)
+        for (int d = 0; d < D; d++) {
+          const double l = lo[d], h = d == top ? H : hi[d], xi = x[D * i + d];
+          const double dl = a[i] - (xi - l), dh = a[i] - (h - xi);
+          if (dl > 0.0) {
+            f[D * i + d] += dl;
+            if (d == top) virial += dl * (xi - l);
+            worst = std::max(worst, dl / (alpha * rr[i]));
+          }
+          if (dh > 0.0) {
+            f[D * i + d] -= dh;
+            if (d == top) virial += dh * (h - xi);
+            worst = std::max(worst, dh / (alpha * rr[i]));
+          }
+        }
+      Pint = virial / (area * H);
+      return worst;
+    };
+
+    // FIRE parameters of Bitzek et al. (2006); unit masses, stiffness 1
+    const double dtmax = 0.2, finc = 1.1, fdec = 0.5, astart = 0.1, falpha = 0.99;
+    const int nmin = 5;
+    double dt = 0.05, afire = astart;
+    int npos = 0;
+    // pressure schedule: compress at 1e-2, then lower by 4x to the final pressure
+    // (mean contact force ~ P d^(D-1) = mean overlap, here alpha / 10 in 2D)
+    double Pfinal = D == 2 ? alpha / 20.0 : alpha / 80.0;
+    double Ptarget = 1e-2;
+    const double gamma = 0.1, epsmax = 2e-3;
+
+    rebuild();
+    int it = 0;
+    for (; it < max_iterations; it++) {
+      const double worst = forces();
+      double fmax2 = 0.0, power = 0.0, vnorm2 = 0.0, fnorm2 = 0.0;
+      for (std::size_t k = 0; k < D * N; k++) {
+        fmax2 = std::max(fmax2, f[k] * f[k]);
+        power += f[k] * v[k];
+        vnorm2 += v[k] * v[k];
+        fnorm2 += f[k] * f[k];
+      }
+      // convergence of the current stage
+      const double fscale = (D == 2 ? 2.0 : 4.0) * Ptarget; // mean contact force ~ P d^(D-1)
+      if (std::sqrt(fmax2) < 0.1 * fscale && std::fabs(Pint - Ptarget) < 0.05 * Ptarget) {
+        if (Ptarget <= Pfinal && worst < 1.0) break;
+        // a few contacts carry forces well above the mean: lower the pressure
+        if (Ptarget <= Pfinal) Pfinal /= 2.0 * worst;
+        Ptarget = std::max(Pfinal, 0.25 * Ptarget);
+      }
+
+      // FIRE: velocity mixing, then a semi-implicit Euler step
+      double keep = 1.0, mix = 0.0;
+      if (power > 0.0) {
+        keep = 1.0 - afire;
+        mix = afire * std::sqrt(vnorm2 / std::max(fnorm2, 1e-300));
+        if (++npos > nmin) {
+          dt = std::min(dt * finc, dtmax);
+          afire *= falpha;
+        }
+      } else {
+        keep = 0.0;
+        dt *= fdec;
+        afire = astart;
+        npos = 0;
+      }
+      // affine barostat on the bed height
+      const double eps = std::max(-epsmax, std::min(epsmax, gamma * (Pint - Ptarget)));
+      H *= 1.0 + eps;
+      strain *= 1.0 + eps;
+      double move2 = 0.0;
+      for (std::size_t i = 0; i < N; i++) {
+        double m2 = 0.0;
+        for (int d = 0; d < D; d++) {
+          const std::size_t k = D * i + d;
+          v[k] = keep * v[k] + mix * f[k] + f[k] * dt;
+          x[k] += v[k] * dt;
+          if (d == top) {
+            x[k] *= 1.0 + eps;
+            xb[k] *= 1.0 + eps;
+          }
+          m2 += (x[k] - xb[k]) * (x[k] - xb[k]);
+        }
+        move2 = std::max(move2, m2);
+      }
+      if (2.0 * std::sqrt(move2) + std::fabs(strain - 1.0) * (2.0 * amax + skin) > skin) rebuild();
+    }
+    for (std::size_t k = 0; k < N; k++)
+      for (int d = 0; d < D; d++) xin[id[k]][d] = x[D * k + d];
+    return it;
+  }
+};
+
 /* ----------------------------------------------------------------------
    Jamming by pressure-controlled energy minimisation.
 
@@ -250,146 +436,30 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
   const double Hmax = hi[top];
   double area = base / std::pow(L, D - 1);
 
-  // random loose start at packing fraction 0.3
+  // random loose start at packing fraction 0.5 (the overlaps are pushed apart first)
   PackingRandom rng(opt.seed);
-  double H = std::max(volume / std::pow(L, D) / (0.3 * area), 2.0 * amax);
-  std::vector<std::array<double, 3>> x(N), v(N), f(N), xb(N);
+  double H = std::max(volume / std::pow(L, D) / (0.5 * area), 2.0 * amax);
+  std::vector<std::array<double, 3>> x0(N);
   for (std::size_t i = 0; i < N; i++) {
-    x[i] = {0.0, 0.0, 0.0};
+    x0[i] = {0.0, 0.0, 0.0};
     for (int d = 0; d < D; d++) {
       const double l = d == top ? 0.0 : lo[d], h = d == top ? H : hi[d];
-      x[i][d] = l + a[i] + (h - l - 2 * a[i]) * rng.uniform();
+      x0[i][d] = l + a[i] + (h - l - 2 * a[i]) * rng.uniform();
     }
   }
-
-  // Verlet list from a cell grid, rebuilt when a disk moved more than skin/2
-  const double skin = 0.3;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  auto rebuild = [&]() {
-    double ghi[3] = {hi[0], hi[1], hi[2]};
-    ghi[top] = H;
-    CellGrid grid(D, lo, ghi, 2.0 * amax + skin);
-    grid.build(x);
-    pairs.clear();
-    const double cut = skin;
-    grid.forEachPair([&](std::size_t i, std::size_t j) {
-      double d2 = 0.0;
-      for (int d = 0; d < D; d++) d2 += (x[i][d] - x[j][d]) * (x[i][d] - x[j][d]);
-      const double c = a[i] + a[j] + cut;
-      if (d2 < c * c)
-        pairs.emplace_back(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
-    });
-    xb = x;
-  };
-
-  // forces and vertical virial stress; returns the largest overlap ratio
-  // (overlap of the a_i over alpha r; > 1 means the true disks overlap)
-  double Pint = 0.0;
-  auto forces = [&]() {
-    for (auto &fi : f) fi = {0.0, 0.0, 0.0};
-    double virial = 0.0, worst = 0.0;
-    for (const auto &p : pairs) {
-      const std::size_t i = p.first, j = p.second;
-      double dx[3] = {0, 0, 0}, d2 = 0.0;
-      for (int d = 0; d < D; d++) {
-        dx[d] = x[j][d] - x[i][d];
-        d2 += dx[d] * dx[d];
-      }
-      const double s = a[i] + a[j];
-      if (d2 >= s * s) continue;
-      const double dist = std::sqrt(d2), delta = s - dist, k = delta / std::max(dist, 1e-300);
-      for (int d = 0; d < D; d++) {
-        f[i][d] -= k * dx[d];
-        f[j][d] += k * dx[d];
-      }
-      virial += k * dx[top] * dx[top];
-      worst = std::max(worst, delta / (alpha * (rr[i] + rr[j])));
-    }
-    for (std::size_t i = 0; i < N; i++)
-      for (int d = 0; d < D; d++) {
-        const double l = lo[d], h = d == top ? H : hi[d];
-        const double dl = a[i] - (x[i][d] - l), dh = a[i] - (h - x[i][d]);
-        if (dl > 0.0) {
-          f[i][d] += dl;
-          if (d == top) virial += dl * (x[i][d] - l);
-          worst = std::max(worst, dl / (alpha * rr[i]));
-        }
-        if (dh > 0.0) {
-          f[i][d] -= dh;
-          if (d == top) virial += dh * (h - x[i][d]);
-          worst = std::max(worst, dh / (alpha * rr[i]));
-        }
-      }
-    Pint = virial / (area * H);
-    return worst;
-  };
-
-  // FIRE parameters of Bitzek et al. (2006); unit masses, stiffness 1
-  const double dtmax = 0.2, finc = 1.1, fdec = 0.5, astart = 0.1, falpha = 0.99;
-  const int nmin = 5;
-  double dt = 0.05, afire = astart;
-  int npos = 0;
-  // pressure schedule: compress at P0, then lower by 4x to the final pressure
-  // (mean contact force ~ P x diameter = mean overlap, here alpha / 10)
-  double Pfinal = D == 2 ? alpha / 20.0 : alpha / 80.0;
-  double Ptarget = 1e-2;
-  const double gamma = 0.1, epsmax = 2e-3;
-
-  rebuild();
-  int it = 0;
-  for (; it < opt.max_iterations; it++) {
-    const double worst = forces();
-    // convergence of the current stage
-    double fmax2 = 0.0, power = 0.0, vnorm2 = 0.0, fnorm2 = 0.0;
-    for (std::size_t i = 0; i < N; i++)
-      for (int d = 0; d < D; d++) {
-        fmax2 = std::max(fmax2, f[i][d] * f[i][d]);
-        power += f[i][d] * v[i][d];
-        vnorm2 += v[i][d] * v[i][d];
-        fnorm2 += f[i][d] * f[i][d];
-      }
-    const double fscale = (D == 2 ? 2.0 : 4.0) * Ptarget; // mean contact force ~ P d^(D-1)
-    if (std::sqrt(fmax2) < 0.1 * fscale && std::fabs(Pint - Ptarget) < 0.05 * Ptarget) {
-      if (Ptarget <= Pfinal && worst < 1.0) break;
-      // a few contacts carry forces well above the mean: lower the pressure
-      if (Ptarget <= Pfinal) Pfinal /= 2.0 * worst;
-      Ptarget = std::max(Pfinal, 0.25 * Ptarget);
-    }
-
-    // FIRE velocity mixing
-    if (power > 0.0) {
-      const double mix = afire * std::sqrt(vnorm2 / std::max(fnorm2, 1e-300));
-      for (std::size_t i = 0; i < N; i++)
-        for (int d = 0; d < D; d++) v[i][d] = (1.0 - afire) * v[i][d] + mix * f[i][d];
-      if (++npos > nmin) {
-        dt = std::min(dt * finc, dtmax);
-        afire *= falpha;
-      }
-    } else {
-      for (auto &vi : v) vi = {0.0, 0.0, 0.0};
-      dt *= fdec;
-      afire = astart;
-      npos = 0;
-    }
-    for (std::size_t i = 0; i < N; i++)
-      for (int d = 0; d < D; d++) {
-        v[i][d] += f[i][d] * dt;
-        x[i][d] += v[i][d] * dt;
-      }
-
-    // affine barostat on the bed height
-    const double eps = std::max(-epsmax, std::min(epsmax, gamma * (Pint - Ptarget)));
-    H *= 1.0 + eps;
-    for (std::size_t i = 0; i < N; i++) x[i][top] *= 1.0 + eps;
-
-    double move2 = 0.0;
-    for (std::size_t i = 0; i < N; i++) {
-      double m2 = 0.0;
-      for (int d = 0; d < D; d++) m2 += (x[i][d] - xb[i][d]) * (x[i][d] - xb[i][d]);
-      move2 = std::max(move2, m2);
-    }
-    if (move2 > 0.25 * skin * skin) rebuild();
+  Minimiser m;
+  for (int d = 0; d < 3; d++) {
+    m.lo[d] = lo[d];
+    m.hi[d] = hi[d];
   }
+  m.H = H;
+  m.alpha = alpha;
+  m.amax = amax;
+  m.area = area;
+  m.max_iterations = opt.max_iterations;
+  const int it = D == 2 ? m.run<2>(x0, a, rr) : m.run<3>(x0, a, rr);
+  H = m.H;
+  const auto &x = x0;
   if (it >= opt.max_iterations)
     throw GeometryError("packing did not converge in " + std::to_string(opt.max_iterations) +
                         " iterations");

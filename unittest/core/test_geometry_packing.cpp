@@ -226,9 +226,9 @@ TEST(GeometryPacking, ContainerErrors)
   // more disk area than the densest packing of the container can hold
   o.hi[0] = 10.0;
   EXPECT_THROW(packSpheres(std::vector<double>(40, 1.0), o), GeometryError);
-  // fits by area (fraction 0.79) but the jammed bed is higher than the container
+  // fits by area (fraction 0.86 < 0.907) but the jammed bed (0.79) is higher than the container
   try {
-    packSpheres(drawRadii(RadiusDistribution::uniform(0.45, 0.55), 100, 1), o);
+    packSpheres(drawRadii(RadiusDistribution::uniform(0.45, 0.55), 110, 1), o);
     ADD_FAILURE() << "expected an error";
   } catch (GeometryError &e) {
     EXPECT_NE(std::string(e.what()).find("high"), std::string::npos) << e.what();
