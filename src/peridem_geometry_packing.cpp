@@ -437,7 +437,11 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
   double area = base / std::pow(L, D - 1);
 
   // random loose start at packing fraction 0.5 (the overlaps are pushed apart first)
-  PackingRandom rng(opt.seed);
+  // a stream of its own: drawRadii with the same seed must not correlate radii and positions
+  std::uint64_t z = opt.seed + 0x9e3779b97f4a7c15ULL; // splitmix64 finaliser
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  PackingRandom rng(z ^ (z >> 31));
   double H = std::max(volume / std::pow(L, D) / (0.5 * area), 2.0 * amax);
   std::vector<std::array<double, 3>> x0(N);
   for (std::size_t i = 0; i < N; i++) {

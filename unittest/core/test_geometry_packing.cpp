@@ -210,6 +210,33 @@ TEST(GeometryPacking, PaperBedsReachThePaperFraction)
   EXPECT_GE(p.fraction, 0.80);
   EXPECT_LE(p.hi[1], 100.0);
   EXPECT_GE(smallestGaps(p).pair, 0.0);
+  // no size segregation: neither the radius nor its squared deviation from
+  // the mean correlates with x or height (radii and start positions come from
+  // one seed; a shared stream once put the extreme sizes at one side)
+  auto correlation = [](const std::vector<double> &a, const std::vector<double> &b) {
+    const double n = a.size();
+    double ma = 0, mb = 0, sab = 0, saa = 0, sbb = 0;
+    for (std::size_t i = 0; i < a.size(); i++) {
+      ma += a[i] / n;
+      mb += b[i] / n;
+    }
+    for (std::size_t i = 0; i < a.size(); i++) {
+      sab += (a[i] - ma) * (b[i] - mb);
+      saa += (a[i] - ma) * (a[i] - ma);
+      sbb += (b[i] - mb) * (b[i] - mb);
+    }
+    return sab / std::sqrt(saa * sbb);
+  };
+  const double mean = std::accumulate(p.radius.begin(), p.radius.end(), 0.0) / p.radius.size();
+  std::vector<double> dev2, pos[2];
+  for (std::size_t i = 0; i < p.radius.size(); i++) {
+    dev2.push_back((p.radius[i] - mean) * (p.radius[i] - mean));
+    for (int d = 0; d < 2; d++) pos[d].push_back(p.centre[i][d]);
+  }
+  for (int d = 0; d < 2; d++) { // 0.1 = 3.9 standard errors at n = 1490
+    EXPECT_LT(std::fabs(correlation(p.radius, pos[d])), 0.1) << "axis " << d;
+    EXPECT_LT(std::fabs(correlation(dev2, pos[d])), 0.1) << "axis " << d;
+  }
   // and the same seed gives the same bed, number for number
   const Packing q = pack2d(1490, 50.0, 100.0, 12);
   EXPECT_EQ(p.centre, q.centre);
