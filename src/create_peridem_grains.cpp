@@ -15,6 +15,7 @@
 #include "lmp_peridem_topology.h"
 
 #include "peridem_geometry_grain.h"
+#include "peridem_geometry_packing.h"
 #include "peridem_geometry_shapes.h"
 
 #include <algorithm>
@@ -177,6 +178,14 @@ class OverlapGrid {
   }
 };
 
+// smallest circle enclosing the outer ring: the grain's security disk (seed §7.1 step 6)
+peridem::EnclosingCircle security_disk(const peridem::Ring &ring)
+{
+  std::vector<std::array<double, 2>> pts;
+  for (const auto &v : ring) pts.push_back({v.x, v.y});
+  return peridem::smallestEnclosingCircle(pts);
+}
+
 } // namespace
 
 /* parsed arguments of one create_peridem_grains command */
@@ -187,6 +196,13 @@ struct CreatePeridemGrains::Options {
   std::string file;                     // polygon file or mesh
   std::string boundary;                 // polygon that prunes the bonds of a mesh
   std::vector<std::array<double, 3>> at;
+  // bed files (create_peridem_bed): per-position radius and angle (degrees), NaN if absent
+  std::vector<double> at_radius, at_angle;
+  std::string label; // keep only the positions-file lines with this label
+  std::vector<std::string> labels_of_lines;
+  std::vector<double> bed; // "# bed xlo xhi ylo yhi zlo zhi" of the positions file
+  double fit_radius = 0.0; // > 0: scale the shape to this security-disk radius
+  bool rotate_given = false;
   double spacing = 0.0, horizon = 0.0, density = 0.0, scale = 1.0, extrude = 0.0;
   double overlap = 0.0;
   double angle = 0.0; // radians
@@ -225,10 +241,21 @@ void CreatePeridemGrains::command(int narg, char **arg)
   Options opt;
   parse(narg, arg, opt);
   check(opt);
-  Grain grain;
-  build(opt, grain);
-  check_bonds_per_atom(grain);
-  place(opt, grain);
+  std::vector<const Grain *> per_grain;
+  std::map<double, Grain> by_radius; // bed files: one discretization per security-disk radius
+  for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
+    const double r = opt.at_radius.empty() ? 0.0 : opt.at_radius[ig];
+    auto it = by_radius.find(r);
+    if (it == by_radius.end()) {
+      Options o = opt;
+      o.fit_radius = r;
+      it = by_radius.emplace(r, Grain()).first;
+      build(o, it->second);
+      check_bonds_per_atom(it->second);
+    }
+    per_grain.push_back(&it->second);
+  }
+  place(opt, per_grain);
 
   if (comm->me == 0) utils::logmesg(lmp, "  {} CPU = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
 }
@@ -289,7 +316,10 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       iarg += 3;
     } else if (key == "positions") {
       need(1, "positions");
-      for (const auto &p : read_positions(arg[iarg++])) o.at.push_back(p);
+      read_positions(arg[iarg++], o);
+    } else if (key == "label") {
+      need(1, "label");
+      o.label = arg[iarg++];
     } else if (key == "spacing") {
       need(1, "spacing");
       o.spacing = positive(arg[iarg++], "spacing");
@@ -309,6 +339,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       o.bond_type = utils::inumeric(FLERR, arg[iarg++], false, lmp);
     } else if (key == "rotate") {
       need(1, "rotate");
+      o.rotate_given = true;
       if (strcmp(arg[iarg], "random") == 0) {
         need(2, "rotate random");
         o.rotate_seed = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
@@ -368,6 +399,34 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       error->all(FLERR, "{}: unknown keyword or shape parameter '{}'", CMD, key);
     }
   }
+
+  // a positions file with labels: keep the lines of this command's label
+  if (!o.at_radius.empty() && o.at.size() != o.at_radius.size())
+    error->all(FLERR, "{}: a positions file with radii cannot be mixed with at or other positions",
+               CMD);
+  if (!o.label.empty() && o.labels_of_lines.empty())
+    error->all(FLERR, "{}: label {} needs a positions file with a label column", CMD, o.label);
+  if (!o.labels_of_lines.empty()) {
+    if (o.label.empty()) o.label = o.shape;
+    std::vector<std::array<double, 3>> at;
+    std::vector<double> radius, angle;
+    for (std::size_t k = 0; k < o.at.size(); k++)
+      if (o.labels_of_lines[k] == o.label) {
+        at.push_back(o.at[k]);
+        radius.push_back(o.at_radius[k]);
+        angle.push_back(o.at_angle[k]);
+      }
+    if (at.empty())
+      error->all(FLERR, "{}: no line of the positions file has label '{}' (use label NAME)", CMD,
+                 o.label);
+    o.at = at;
+    o.at_radius = radius;
+    o.at_angle = angle;
+  }
+  if (!o.at_radius.empty() && o.scale != 1.0)
+    error->all(FLERR, "{}: scale cannot be used with a positions file that gives radii", CMD);
+  if (!o.at_angle.empty() && o.rotate_given)
+    error->all(FLERR, "{}: rotate cannot be used with a positions file that gives angles", CMD);
 
   // the material gives what the command does not repeat
   if (have_material) {
@@ -429,20 +488,29 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
   try {
     if (o.shape == "gmsh") {
       peridem::Mesh2D mesh = peridem::readGmshMesh(o.file);
-      for (auto &v : mesh.vertices) v = v * o.scale;
-      peridem::Nodes2D nodes = peridem::meshNodes(mesh);
+      double scale = o.scale;
       peridem::Vec2 c;
-      double area = 0.0;
-      for (std::size_t i = 0; i < nodes.size(); i++) {
-        c = c + nodes.x[i] * nodes.volume[i];
-        area += nodes.volume[i];
+      if (o.fit_radius > 0.0) { // centre of the security disk, diameter matched
+        const peridem::EnclosingCircle e = security_disk(mesh.vertices);
+        c = peridem::Vec2(e.x, e.y);
+        scale = o.fit_radius / e.r;
+        c = c * scale;
       }
-      c = c / area;
+      for (auto &v : mesh.vertices) v = v * scale;
+      if (o.fit_radius == 0.0) {
+        peridem::Nodes2D nodes = peridem::meshNodes(mesh);
+        double area = 0.0;
+        for (std::size_t i = 0; i < nodes.size(); i++) {
+          c = c + nodes.x[i] * nodes.volume[i];
+          area += nodes.volume[i];
+        }
+        c = c / area;
+      }
       for (auto &v : mesh.vertices) v = v - c;
       peridem::Polygon boundary;
       if (!o.boundary.empty()) {
         boundary = peridem::readPolygonFile(o.boundary);
-        boundary.scale(o.scale).translate(c * -1.0);
+        boundary.scale(scale).translate(c * -1.0);
       }
       const peridem::Grain2D grain =
           peridem::meshGrain(mesh, o.horizon, o.boundary.empty() ? nullptr : &boundary, o.notches);
@@ -456,6 +524,14 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
     if (o.is_solid()) {
       std::map<std::string, double> p = solid_shapes().at(o.shape);
       for (const auto &kv : o.params) p[kv.first] = kv.second * o.scale;
+      if (o.fit_radius > 0.0) { // circumscribed sphere of the solid = security sphere
+        const double r =
+            o.shape == "sphere" ? p["radius"]
+            : o.shape == "box"
+                ? 0.5 * std::sqrt(p["lx"] * p["lx"] + p["ly"] * p["ly"] + p["lz"] * p["lz"])
+                : std::sqrt(p["radius"] * p["radius"] + 0.25 * p["height"] * p["height"]);
+        for (auto &kv : p) kv.second *= o.fit_radius / r;
+      }
       for (const auto &kv : p)
         if (!(kv.second > 0.0))
           throw peridem::GeometryError(o.shape + " " + kv.first + " must be > 0");
@@ -479,9 +555,17 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
       shape = peridem::makeShape(o.shape, o.params);
     }
     shape.scale(o.scale);
+    double extrude = o.extrude;
+    if (o.fit_radius > 0.0) { // security disk (sphere of an extrusion), diameter matched
+      const peridem::EnclosingCircle e = security_disk(shape.outer());
+      shape.translate(peridem::Vec2(-e.x, -e.y));
+      const double s = o.fit_radius / std::sqrt(e.r * e.r + 0.25 * extrude * extrude);
+      shape.scale(s);
+      extrude *= s;
+    }
 
-    if (o.extrude > 0.0) {
-      const peridem::Shape3D s = peridem::Shape3D::extrusion(shape, o.extrude);
+    if (extrude > 0.0) {
+      const peridem::Shape3D s = peridem::Shape3D::extrusion(shape, extrude);
       peridem::Grain3D grain = peridem::discretizeGrain3D(s, o.spacing, o.horizon, o.pruning);
       std::vector<peridem::Vec2> xy;
       for (const auto &v : grain.nodes.x) {
@@ -531,13 +615,14 @@ void CreatePeridemGrains::check_bonds_per_atom(const Grain &g)
    with atom IDs tag0 + node index so bonds attach by ID on any rank
 ------------------------------------------------------------------------- */
 
-void CreatePeridemGrains::place(const Options &o, const Grain &g)
+void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain *> &grains)
 {
   const int nlocal_previous = atom->nlocal;
   const bigint natoms_previous = atom->natoms;
-  const int n = static_cast<int>(g.x.size());
   const bigint ngrains = static_cast<bigint>(o.at.size());
-  if (natoms_previous + ngrains * n >= MAXTAGINT)
+  bigint nnodes = 0;
+  for (const Grain *g : grains) nnodes += static_cast<bigint>(g->x.size());
+  if (natoms_previous + nnodes >= MAXTAGINT)
     error->all(FLERR, "{}: too many atoms for 32-bit atom IDs", CMD);
 
   tagint maxtag = 0, maxmol = 0;
@@ -574,10 +659,16 @@ void CreatePeridemGrains::place(const Options &o, const Grain &g)
   };
 
   std::mt19937_64 gen(static_cast<std::uint64_t>(o.rotate_seed));
-  std::vector<std::array<double, 3>> X(n);
-  std::vector<int> local(n);
+  std::vector<std::array<double, 3>> X;
+  std::vector<int> local;
+  double volume_created = 0.0;
   for (bigint ig = 0; ig < ngrains; ig++) {
-    Rotation R = o.axis_given ? Rotation::about_axis(o.angle, o.axis) : Rotation::about_z(o.angle);
+    const Grain &g = *grains[ig];
+    const int n = static_cast<int>(g.x.size());
+    X.resize(n);
+    local.resize(n);
+    const double angle = o.at_angle.empty() ? o.angle : o.at_angle[ig];
+    Rotation R = o.axis_given ? Rotation::about_axis(angle, o.axis) : Rotation::about_z(angle);
     if (o.rotate_seed > 0) {
       const double u1 = uniform(gen), u2 = uniform(gen), u3 = uniform(gen);
       R = domain->dimension == 2 ? Rotation::about_z(2 * M_PI * u1)
@@ -626,6 +717,7 @@ void CreatePeridemGrains::place(const Options &o, const Grain &g)
       atom->image[i] = image;
       atom->molecule[i] = mol;
       atom->vfrac[i] = g.volume[k];
+      volume_created += g.volume[k];
       atom->rmass[i] = o.density * g.volume[k];
       for (int d = 0; d < 3; d++) atom->x0[i][d] = X[k][d]; // unwrapped reference
       if (grid) grid->insert(xk, atom->tag[i]);
@@ -649,10 +741,10 @@ void CreatePeridemGrains::place(const Options &o, const Grain &g)
   // every node must have found an owner
   bigint nblocal = atom->nlocal;
   MPI_Allreduce(&nblocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  const bigint expected = natoms_previous + ngrains * n;
+  const bigint expected = natoms_previous + nnodes;
   if (atom->natoms != expected)
     error->all(FLERR, "{}: {} of {} grain nodes are outside the simulation box", CMD,
-               expected - atom->natoms, ngrains * n);
+               expected - atom->natoms, nnodes);
 
   atom->data_fix_compute_variable(nlocal_previous, atom->nlocal);
   atom->tag_check();
@@ -663,33 +755,93 @@ void CreatePeridemGrains::place(const Options &o, const Grain &g)
   const bigint nbonds_previous = atom->nbonds;
   const bigint nbonds = PERIDEM::finish_bond_edit(lmp);
 
-  if (comm->me == 0)
-    utils::logmesg(lmp,
-                   "Created {} peridem grains (IDs {} to {}) of {} nodes and {} bonds each: {} "
-                   "atoms, {} bonds added\n",
-                   ngrains, first_mol, mol - 1, n, g.bonds.size(), atom->natoms - natoms_previous,
-                   nbonds - nbonds_previous);
+  if (comm->me == 0) {
+    if (o.at_radius.empty())
+      utils::logmesg(lmp,
+                     "Created {} peridem grains (IDs {} to {}) of {} nodes and {} bonds each: {} "
+                     "atoms, {} bonds added\n",
+                     ngrains, first_mol, mol - 1, grains[0]->x.size(), grains[0]->bonds.size(),
+                     atom->natoms - natoms_previous, nbonds - nbonds_previous);
+    else
+      utils::logmesg(lmp,
+                     "Created {} peridem grains (IDs {} to {}) sized to their security disks: {} "
+                     "atoms, {} bonds added\n",
+                     ngrains, first_mol, mol - 1, atom->natoms - natoms_previous,
+                     nbonds - nbonds_previous);
+  }
+  double vsum = 0.0;
+  MPI_Allreduce(&volume_created, &vsum, 1, MPI_DOUBLE, MPI_SUM, world);
+  report_bed_fraction(o, vsum);
 }
 
 /* ----------------------------------------------------------------------
-   positions file: one "x y z" per line, '#' starts a comment
+   positions file: one "x y z" per line, or "x y z radius [angle [label]]"
+   (a bed file of create_peridem_bed: radius of the security disk, angle in
+   degrees); '#' starts a comment; "# bed xlo xhi ylo yhi zlo zhi" gives the
+   bed for the packing-fraction report
 ------------------------------------------------------------------------- */
 
-std::vector<std::array<double, 3>> CreatePeridemGrains::read_positions(const char *file)
+void CreatePeridemGrains::read_positions(const char *file, Options &o)
 {
   std::ifstream in(file);
   if (!in) error->all(FLERR, "{}: cannot open positions file {}", CMD, file);
-  std::vector<std::array<double, 3>> out;
   std::string line;
+  int columns = 0;
   for (int lineno = 1; std::getline(in, line); lineno++) {
+    if (line.rfind("# bed ", 0) == 0) {
+      std::istringstream b(line.substr(6));
+      double v;
+      o.bed.clear();
+      while (b >> v) o.bed.push_back(v);
+    }
     line = line.substr(0, line.find('#'));
     std::istringstream s(line);
-    std::array<double, 3> p;
-    if (!(s >> p[0])) continue;
-    std::string rest;
-    if (!(s >> p[1] >> p[2]) || (s >> rest))
-      error->all(FLERR, "{}: positions file {}:{}: expected 'x y z'", CMD, file, lineno);
-    out.push_back(p);
+    std::vector<std::string> words;
+    std::string w;
+    while (s >> w) words.push_back(w);
+    if (words.empty()) continue;
+    const int n = static_cast<int>(words.size());
+    if (n < 3 || n > 6 || (columns > 0 && n != columns))
+      error->all(FLERR,
+                 "{}: positions file {}:{}: expected 'x y z [radius [angle [label]]]' with the "
+                 "same columns on every line",
+                 CMD, file, lineno);
+    columns = n;
+    double v[5] = {0, 0, 0, 0, 0};
+    for (int k = 0; k < std::min(n, 5); k++) {
+      if (!utils::is_double(words[k]))
+        error->all(FLERR, "{}: positions file {}:{}: '{}' is not a number", CMD, file, lineno,
+                   words[k]);
+      v[k] = std::stod(words[k]);
+    }
+    o.at.push_back({v[0], v[1], v[2]});
+    if (n >= 4) {
+      if (!(v[3] > 0.0))
+        error->all(FLERR, "{}: positions file {}:{}: radius {} must be > 0", CMD, file, lineno,
+                   words[3]);
+      o.at_radius.push_back(v[3]);
+    }
+    if (n >= 5) o.at_angle.push_back(v[4] * M_PI / 180.0);
+    if (n == 6) o.labels_of_lines.push_back(words[5]);
   }
-  return out;
+}
+
+/* ----------------------------------------------------------------------
+   grains of a bed file: their volume against the bed's (grain-shape seed §7.3
+   volume fraction), and that of all atoms so far (several labels, one bed)
+------------------------------------------------------------------------- */
+
+void CreatePeridemGrains::report_bed_fraction(const Options &o, double created)
+{
+  if (o.bed.size() != 6) return;
+  double vbed = 1.0;
+  for (int k = 0; k < domain->dimension; k++) vbed *= o.bed[2 * k + 1] - o.bed[2 * k];
+  double mine = 0.0, all;
+  for (int i = 0; i < atom->nlocal; i++) mine += atom->vfrac[i];
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "  grain volume fraction of the bed: {:.4f} of these grains, {:.4f} of all "
+                   "atoms\n",
+                   created / vbed, all / vbed);
 }

@@ -41,8 +41,9 @@ class CreatePeridemGrains : public Command {
   void check(const Options &);
   void build(const Options &, Grain &);
   void check_bonds_per_atom(const Grain &);
-  void place(const Options &, const Grain &);
-  std::vector<std::array<double, 3>> read_positions(const char *);
+  void place(const Options &, const std::vector<const Grain *> &);
+  void read_positions(const char *, Options &);
+  void report_bed_fraction(const Options &, double);
 };
 
 } // namespace LAMMPS_NS

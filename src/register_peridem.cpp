@@ -15,6 +15,7 @@
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
 #include "compute_peridem_damage.h"
+#include "create_peridem_bed.h"
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
@@ -115,6 +116,7 @@ void for_each_style(StyleSink &sink)
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
+  sink.command("create_peridem_bed", &command_creator<CreatePeridemBed>);
 }
 
 void register_styles(LAMMPS *lmp, const std::string &expected_version)

@@ -1,0 +1,49 @@
+// Benchmark (issue 12 "Performance"): jam N polydisperse disks (radius
+// 0.4-1.1, mean 0.8, sd 0.09, the grain-shape seed's §7.3 bed) in a container
+// of width sqrt(N) mean diameters (a square-ish bed), one core. Prints N, the
+// median wall and CPU time of `repeats` runs, iterations, packing fraction, rattlers.
+// Not a unit test; build by hand from the repo root:
+//   g++ -O2 -std=c++17 -Isrc bench/packing/bench_packing.cpp
+//       src/peridem_geometry_packing.cpp -o /tmp/bench_packing
+//   /tmp/bench_packing 1500 5000 20000 100000
+#include "peridem_geometry_packing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <cstdlib>
+#include <vector>
+
+using namespace peridem;
+
+int main(int argc, char **argv)
+{
+  for (int a = 1; a < argc; a++) {
+    const std::size_t n = std::strtoul(argv[a], nullptr, 10);
+    const int repeats = n <= 20000 ? 5 : 1;
+    const auto r = drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), n, 1);
+    PackingOptions o;
+    o.hi[0] = 1.6 * std::sqrt(static_cast<double>(n));
+    o.hi[1] = 4 * o.hi[0];
+    std::vector<double> t, cpu;
+    Packing p;
+    for (int k = 0; k < repeats; k++) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::clock_t c0 = std::clock();
+      p = packSpheres(r, o);
+      cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
+      t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::sort(t.begin(), t.end());
+    std::sort(cpu.begin(), cpu.end());
+    const auto j = jammingReport(p, o.tolerance);
+    std::printf("N %zu  median wall %.3f s, cpu %.3f s (%d runs)  ns per disk-iteration %.0f  "
+                "iterations %d  fraction %.4f  rattlers %.1f%%  smallest gap %.2g\n",
+                n, t[t.size() / 2], cpu[cpu.size() / 2], repeats,
+                1e9 * cpu[cpu.size() / 2] / (static_cast<double>(n) * p.iterations), p.iterations,
+                p.fraction, 100.0 * j.rattlers / n, smallestGaps(p).pair);
+    std::fflush(stdout);
+  }
+}

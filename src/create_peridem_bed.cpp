@@ -1,0 +1,206 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: command create_peridem_bed, see doc/create_peridem_bed.rst.
+------------------------------------------------------------------------- */
+
+#include "create_peridem_bed.h"
+
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+
+#include "peridem_geometry_packing.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr const char *CMD = "create_peridem_bed";
+}
+
+CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp) {}
+
+/* ----------------------------------------------------------------------
+   create_peridem_bed FILE count N radius STYLE args seed S keyword value ...
+------------------------------------------------------------------------- */
+
+void CreatePeridemBed::command(int narg, char **arg)
+{
+  if (domain->box_exist == 0) error->all(FLERR, "{} command before simulation box is defined", CMD);
+  if (narg < 1) error->all(FLERR, "Illegal {} command: expected an output file", CMD);
+  const double time0 = MPI_Wtime();
+  const int dim = domain->dimension;
+  const std::string file = arg[0];
+
+  long long count = 0, seed = 0;
+  bool have_radius = false;
+  peridem::RadiusDistribution dist;
+  double rc = 0.0, tolerance = 1e-3;
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; k++) {
+    lo[k] = domain->boxlo[k];
+    hi[k] = domain->boxhi[k];
+  }
+  std::vector<std::string> labels;
+  std::vector<double> weights;
+
+  int iarg = 1;
+  auto need = [&](int n, const char *what) {
+    if (iarg + n > narg)
+      error->all(FLERR, "Illegal {} command: {} needs {} value(s)", CMD, what, n);
+  };
+  auto num = [&](int k) { return utils::numeric(FLERR, arg[k], false, lmp); };
+  while (iarg < narg) {
+    const std::string key = arg[iarg++];
+    if (key == "count") {
+      need(1, "count");
+      count = utils::bnumeric(FLERR, arg[iarg++], false, lmp);
+      if (count <= 0) error->all(FLERR, "{}: count must be > 0, got {}", CMD, count);
+    } else if (key == "radius") {
+      need(1, "radius");
+      const std::string style = arg[iarg++];
+      if (style == "uniform") {
+        need(2, "radius uniform");
+        dist = peridem::RadiusDistribution::uniform(num(iarg), num(iarg + 1));
+        iarg += 2;
+      } else if (style == "normal") {
+        need(4, "radius normal");
+        dist = peridem::RadiusDistribution::normal(num(iarg), num(iarg + 1), num(iarg + 2),
+                                                   num(iarg + 3));
+        iarg += 4;
+      } else if (style == "list") {
+        std::vector<double> values;
+        while (iarg < narg && utils::is_double(arg[iarg])) values.push_back(num(iarg++));
+        dist = peridem::RadiusDistribution::list(values);
+      } else {
+        error->all(FLERR, "{}: unknown radius distribution '{}' (use uniform, normal or list)", CMD,
+                   style);
+      }
+      have_radius = true;
+    } else if (key == "seed") {
+      need(1, "seed");
+      seed = utils::bnumeric(FLERR, arg[iarg++], false, lmp);
+      if (seed <= 0) error->all(FLERR, "{}: seed must be > 0, got {}", CMD, seed);
+    } else if (key == "box") {
+      need(2 * dim, "box");
+      for (int k = 0; k < dim; k++) {
+        lo[k] = num(iarg + 2 * k);
+        hi[k] = num(iarg + 2 * k + 1);
+        if (!(hi[k] > lo[k]))
+          error->all(FLERR, "{}: box {} {} is empty or inverted", CMD, arg[iarg + 2 * k],
+                     arg[iarg + 2 * k + 1]);
+      }
+      iarg += 2 * dim;
+    } else if (key == "contact_radius") {
+      need(1, "contact_radius");
+      rc = num(iarg++);
+      if (!(rc >= 0.0)) error->all(FLERR, "{}: contact_radius must be >= 0, got {}", CMD, rc);
+    } else if (key == "tolerance") {
+      need(1, "tolerance");
+      tolerance = num(iarg++);
+    } else if (key == "labels") {
+      while (iarg + 1 < narg && !utils::is_double(arg[iarg]) && utils::is_double(arg[iarg + 1])) {
+        labels.emplace_back(arg[iarg]);
+        weights.push_back(num(iarg + 1));
+        if (!(weights.back() > 0.0))
+          error->all(FLERR, "{}: proportion of label {} must be > 0, got {}", CMD, arg[iarg],
+                     arg[iarg + 1]);
+        iarg += 2;
+      }
+      if (labels.empty())
+        error->all(FLERR, "Illegal {} command: labels needs NAME PROPORTION pairs", CMD);
+    } else {
+      error->all(FLERR, "{}: unknown keyword '{}'", CMD, key);
+    }
+  }
+  if (count == 0) error->all(FLERR, "{}: no number of disks given (use count N)", CMD);
+  if (!have_radius) error->all(FLERR, "{}: no radius distribution given (use radius ...)", CMD);
+  if (seed == 0) error->all(FLERR, "{}: no random seed given (use seed S)", CMD);
+  if (labels.empty()) {
+    labels.emplace_back("grain");
+    weights.push_back(1.0);
+  }
+  if (dim == 2) lo[2] = hi[2] = 0.0;
+
+  // rank 0 packs and writes; every rank learns the outcome (same on any number of ranks)
+  std::string message;
+  char line[512];
+  if (comm->me == 0) {
+    try {
+      dist.validate();
+      if (rc / 2.0 >= dist.smallest())
+        throw peridem::GeometryError("contact_radius " + std::to_string(rc) +
+                                     " leaves nothing of the smallest disk after shrinking by "
+                                     "R_c/2 (radius " +
+                                     std::to_string(dist.smallest()) + ")");
+      // jam the security disks in the container inset by R_c/2: after shrinking them by
+      // R_c/2 the grains are >= R_c from each other and from the walls (seed §7.1 step 5)
+      peridem::PackingOptions opt;
+      opt.dimension = dim;
+      for (int k = 0; k < 3; k++) {
+        opt.lo[k] = lo[k] + (k < dim ? rc / 2 : 0.0);
+        opt.hi[k] = hi[k] - (k < dim ? rc / 2 : 0.0);
+      }
+      opt.seed = static_cast<std::uint64_t>(seed);
+      opt.tolerance = tolerance;
+      const auto radii = peridem::drawRadii(dist, count, static_cast<std::uint64_t>(seed));
+      const peridem::Packing p = peridem::packSpheres(radii, opt);
+      const auto jam = peridem::jammingReport(p, tolerance);
+
+      // angles and labels from their own stream of the seed
+      peridem::PackingRandom rng(static_cast<std::uint64_t>(seed) ^ 0x9e3779b97f4a7c15ULL);
+      double wsum = 0.0;
+      for (double w : weights) wsum += w;
+      FILE *out = fopen(file.c_str(), "w");
+      if (!out) throw peridem::GeometryError("cannot write bed file " + file);
+      const int top = dim - 1;
+      double bed[3][2] = {{lo[0], hi[0]}, {lo[1], hi[1]}, {lo[2], hi[2]}};
+      bed[top][1] = p.hi[top] + rc / 2; // the bed's lid (container coordinates)
+      double vbed = 1.0, vgrain = 0.0;
+      for (int k = 0; k < dim; k++) vbed *= bed[k][1] - bed[k][0];
+      for (double r : radii) {
+        const double s = r - rc / 2;
+        vgrain += dim == 2 ? M_PI * s * s : 4.0 / 3.0 * M_PI * s * s * s;
+      }
+      fprintf(out, "# create_peridem_bed: %lld jammed security %s, seed %lld\n", count,
+              dim == 2 ? "disks" : "spheres", seed);
+      fprintf(out, "# bed %.17g %.17g %.17g %.17g %.17g %.17g\n", bed[0][0], bed[0][1], bed[1][0],
+              bed[1][1], bed[2][0], bed[2][1]);
+      fprintf(out,
+              "# jammed packing fraction %.6f (of the bed inset by R_c/2 = %g); after shrinking "
+              "by R_c/2: %.6f of the bed; rattlers %zu\n",
+              p.fraction, rc / 2, vgrain / vbed, jam.rattlers);
+      fprintf(out, "# x y z radius angle(degrees) label   (radius: shrunk by R_c/2)\n");
+      for (std::size_t i = 0; i < radii.size(); i++) {
+        const double angle = 360.0 * rng.uniform();
+        double u = rng.uniform() * wsum;
+        std::size_t l = 0;
+        while (l + 1 < labels.size() && u >= weights[l]) u -= weights[l++];
+        fprintf(out, "%.17g %.17g %.17g %.17g %.17g %s\n", p.centre[i][0], p.centre[i][1],
+                p.centre[i][2], radii[i] - rc / 2, angle, labels[l].c_str());
+      }
+      fclose(out);
+      snprintf(line, sizeof(line),
+               "Created a bed of %lld jammed %s in %s: bed height %.6g (container %.6g), "
+               "packing fraction %.4f of security %s (%.4f after shrinking by R_c/2 = %g), "
+               "%zu rattlers, %d iterations\n",
+               count, dim == 2 ? "disks" : "spheres", file.c_str(), bed[top][1] - bed[top][0],
+               hi[top] - lo[top], p.fraction, dim == 2 ? "disks" : "spheres", vgrain / vbed, rc / 2,
+               jam.rattlers, p.iterations);
+    } catch (peridem::GeometryError &e) {
+      message = e.what();
+    }
+  }
+  int len = static_cast<int>(message.size());
+  MPI_Bcast(&len, 1, MPI_INT, 0, world);
+  message.resize(len);
+  MPI_Bcast(&message[0], len, MPI_CHAR, 0, world);
+  if (len > 0) error->all(FLERR, "{}: {}", CMD, message);
+  if (comm->me == 0) {
+    utils::logmesg(lmp, line);
+    utils::logmesg(lmp, "  {} CPU = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
+  }
+}

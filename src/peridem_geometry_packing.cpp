@@ -1,0 +1,724 @@
+// Jammed polydisperse disk/sphere packings (grain-shape seed §7-7.1); see the
+// header for the method and its references.
+#include "peridem_geometry_packing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace peridem {
+
+namespace {
+
+std::string str(double v)
+{
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+double ballVolume(double r, int dim)
+{
+  return dim == 2 ? M_PI * r * r : 4.0 / 3.0 * M_PI * r * r * r;
+}
+
+/* Cell grid over [lo, hi] (cells of side >= `size`; points outside are put in
+   the border cells). Cells are sorted by a counting sort, so building is O(N).
+   forEachPair visits each unordered pair of points in the same or adjacent
+   cells once (half stencil). */
+class CellGrid {
+ public:
+  CellGrid(int dim, const double *lo, const double *hi, double size) : dim(dim)
+  {
+    for (int d = 0; d < 3; d++) {
+      const double w = d < dim ? hi[d] - lo[d] : 0.0;
+      n[d] = d < dim ? std::max(1, static_cast<int>(w / size)) : 1;
+      base[d] = lo[d];
+      inv[d] = d < dim ? n[d] / std::max(w, 1e-300) : 0.0;
+    }
+  }
+  void build(const std::vector<std::array<double, 3>> &x)
+  {
+    const std::size_t np = x.size();
+    cellOf.resize(np);
+    start.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2] + 1, 0);
+    for (std::size_t i = 0; i < np; i++) {
+      int c[3] = {0, 0, 0};
+      for (int d = 0; d < dim; d++)
+        c[d] = std::min(n[d] - 1, std::max(0, static_cast<int>((x[i][d] - base[d]) * inv[d])));
+      cellOf[i] = (static_cast<std::size_t>(c[2]) * n[1] + c[1]) * n[0] + c[0];
+      start[cellOf[i] + 1]++;
+    }
+    for (std::size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
+    order.resize(np);
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < np; i++) order[fill[cellOf[i]]++] = i;
+  }
+  // point indices sorted by cell (after build)
+  const std::vector<std::size_t> &sorted() const { return order; }
+  template <class F> void forEachPair(F &&f) const
+  {
+    // half stencil: the cell itself (j > i) and the neighbours "after" it
+    static const int off2[4][3] = {{1, 0, 0}, {-1, 1, 0}, {0, 1, 0}, {1, 1, 0}};
+    static const int off3[13][3] = {{1, 0, 0},  {-1, 1, 0}, {0, 1, 0},  {1, 1, 0}, {-1, -1, 1},
+                                    {0, -1, 1}, {1, -1, 1}, {-1, 0, 1}, {0, 0, 1}, {1, 0, 1},
+                                    {-1, 1, 1}, {0, 1, 1},  {1, 1, 1}};
+    const int noff = dim == 2 ? 4 : 13;
+    const int(*off)[3] = dim == 2 ? off2 : off3;
+    for (int cz = 0; cz < n[2]; cz++)
+      for (int cy = 0; cy < n[1]; cy++)
+        for (int cx = 0; cx < n[0]; cx++) {
+          const std::size_t c = (static_cast<std::size_t>(cz) * n[1] + cy) * n[0] + cx;
+          for (std::size_t a = start[c]; a < start[c + 1]; a++) {
+            for (std::size_t b = a + 1; b < start[c + 1]; b++) f(order[a], order[b]);
+            for (int k = 0; k < noff; k++) {
+              const int ox = cx + off[k][0], oy = cy + off[k][1], oz = cz + off[k][2];
+              if (ox < 0 || oy < 0 || oz < 0 || ox >= n[0] || oy >= n[1] || oz >= n[2]) continue;
+              const std::size_t o = (static_cast<std::size_t>(oz) * n[1] + oy) * n[0] + ox;
+              for (std::size_t b = start[o]; b < start[o + 1]; b++) f(order[a], order[b]);
+            }
+          }
+        }
+  }
+
+ private:
+  int dim;
+  int n[3];
+  double base[3], inv[3];
+  std::vector<std::size_t> cellOf, start, order;
+};
+
+} // namespace
+
+/* ---------------------------------------------------------------------- */
+
+RadiusDistribution RadiusDistribution::uniform(double lo, double hi)
+{
+  RadiusDistribution d;
+  d.kind = Kind::Uniform;
+  d.lo = lo;
+  d.hi = hi;
+  return d;
+}
+
+RadiusDistribution RadiusDistribution::normal(double mean, double sd, double lo, double hi)
+{
+  RadiusDistribution d;
+  d.kind = Kind::Normal;
+  d.mean = mean;
+  d.sd = sd;
+  d.lo = lo;
+  d.hi = hi;
+  return d;
+}
+
+RadiusDistribution RadiusDistribution::list(std::vector<double> values)
+{
+  RadiusDistribution d;
+  d.kind = Kind::List;
+  d.values = std::move(values);
+  return d;
+}
+
+void RadiusDistribution::validate() const
+{
+  if (kind == Kind::List) {
+    if (values.empty()) throw GeometryError("radius list is empty");
+    for (double v : values)
+      if (!(v > 0.0)) throw GeometryError("radius " + str(v) + " in the list must be > 0");
+    return;
+  }
+  if (!(lo > 0.0)) throw GeometryError("smallest radius " + str(lo) + " must be > 0");
+  if (!(hi >= lo)) throw GeometryError("inverted radius range: " + str(lo) + " > " + str(hi));
+  if (kind == Kind::Normal) {
+    if (!(sd >= 0.0)) throw GeometryError("standard deviation " + str(sd) + " must be >= 0");
+    if (sd == 0.0 ? (mean < lo || mean > hi) : (mean + 8 * sd < lo || mean - 8 * sd > hi))
+      throw GeometryError("normal radius distribution (mean " + str(mean) + ", sd " + str(sd) +
+                          ") has no mass in the range [" + str(lo) + ", " + str(hi) + "]");
+  }
+}
+
+double RadiusDistribution::smallest() const
+{
+  return kind == Kind::List ? *std::min_element(values.begin(), values.end()) : lo;
+}
+
+double RadiusDistribution::largest() const
+{
+  return kind == Kind::List ? *std::max_element(values.begin(), values.end()) : hi;
+}
+
+double PackingRandom::normal()
+{
+  // Box-Muller; 1 - u keeps the logarithm finite
+  const double u1 = 1.0 - uniform(), u2 = uniform();
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+}
+
+std::vector<double> drawRadii(const RadiusDistribution &dist, std::size_t n, std::uint64_t seed)
+{
+  dist.validate();
+  PackingRandom rng(seed);
+  std::vector<double> r(n);
+  for (auto &v : r) {
+    switch (dist.kind) {
+    case RadiusDistribution::Kind::Uniform:
+      v = dist.lo + (dist.hi - dist.lo) * rng.uniform();
+      break;
+    case RadiusDistribution::Kind::List:
+      v = dist.values[std::min(dist.values.size() - 1,
+                               static_cast<std::size_t>(rng.uniform() * dist.values.size()))];
+      break;
+    case RadiusDistribution::Kind::Normal:
+      if (dist.sd == 0.0) {
+        v = dist.mean;
+        break;
+      }
+      // truncation by rejection; validate() ensured the range has mass
+      do {
+        v = dist.mean + dist.sd * rng.normal();
+      } while (v < dist.lo || v > dist.hi);
+      break;
+    }
+  }
+  return r;
+}
+
+/* FIRE + barostat state of packSpheres (lengths in mean radii) */
+struct Minimiser {
+  double lo[3], hi[3];
+  double H, alpha, amax, area;
+  int max_iterations;
+
+  // x: positions in, jammed positions out (original order); returns iterations
+  template <int D>
+  int run(std::vector<std::array<double, 3>> &xin, const std::vector<double> &ain,
+          const std::vector<double> &rin)
+  {
+    constexpr int top = D - 1;
+    const std::size_t N = xin.size();
+    // working arrays, reordered by cell at each list build for locality
+    std::vector<double> x(D * N), v(D * N, 0.0), f(D * N), xb(D * N), a(ain), rr(rin);
+    std::vector<std::size_t> id(N);
+    for (std::size_t i = 0; i < N; i++) {
+      id[i] = i;
+      for (int d = 0; d < D; d++) x[D * i + d] = xin[i][d];
+    }
+
+    // Verlet list from a cell grid; the list's reference positions follow the
+    // affine part of the motion, so only the non-affine motion and the strain
+    // since the build eat into the skin
+    const double skin = 0.3;
+    std::vector<std::uint32_t> pairs;
+    double strain = 1.0;
+    std::vector<std::array<double, 3>> cellx(N);
+    std::vector<double> tmp;
+    auto permute = [&](std::vector<double> &arr, int width, const std::vector<std::size_t> &order) {
+      tmp.resize(arr.size());
+      for (std::size_t k = 0; k < N; k++)
+        for (int d = 0; d < width; d++) tmp[width * k + d] = arr[width * order[k] + d];
+      arr.swap(tmp);
+    };
+    auto rebuild = [&]() {
+      double ghi[3] = {hi[0], hi[1], hi[2]};
+      ghi[top] = H;
+      CellGrid grid(D, lo, ghi, 2.0 * amax + skin);
+      for (std::size_t i = 0; i < N; i++)
+        for (int d = 0; d < D; d++) cellx[i][d] = x[D * i + d];
+      grid.build(cellx);
+      // reorder every array by cell
+      const std::vector<std::size_t> &order = grid.sorted();
+      permute(x, D, order);
+      permute(v, D, order);
+      permute(a, 1, order);
+      permute(rr, 1, order);
+      std::vector<std::size_t> nid(N);
+      for (std::size_t k = 0; k < N; k++) nid[k] = id[order[k]];
+      id.swap(nid);
+      std::vector<std::size_t> rank(N);
+      for (std::size_t k = 0; k < N; k++) rank[order[k]] = k;
+      pairs.clear();
+      grid.forEachPair([&](std::size_t i0, std::size_t j0) {
+        const std::size_t i = rank[i0], j = rank[j0];
+        double d2 = 0.0;
+        for (int d = 0; d < D; d++)
+          d2 += (x[D * i + d] - x[D * j + d]) * (x[D * i + d] - x[D * j + d]);
+        const double c = a[i] + a[j] + skin;
+        if (d2 < c * c) {
+          pairs.push_back(static_cast<std::uint32_t>(std::min(i, j)));
+          pairs.push_back(static_cast<std::uint32_t>(std::max(i, j)));
+        }
+      });
+      xb = x;
+      strain = 1.0;
+    };
+
+    // forces and vertical virial stress; returns the largest overlap ratio
+    // (overlap of the a_i over alpha r; > 1 means the true disks overlap)
+    double Pint = 0.0;
+    auto forces = [&]() {
+      std::fill(f.begin(), f.end(), 0.0);
+      double virial = 0.0, worst = 0.0;
+      for (std::size_t p = 0; p < pairs.size(); p += 2) {
+        const std::size_t i = pairs[p], j = pairs[p + 1];
+        double dx[D], d2 = 0.0;
+        for (int d = 0; d < D; d++) {
+          dx[d] = x[D * j + d] - x[D * i + d];
+          d2 += dx[d] * dx[d];
+        }
+        const double sum = a[i] + a[j];
+        if (d2 >= sum * sum) continue;
+        const double dist = std::sqrt(d2), delta = sum - dist, k = delta / std::max(dist, 1e-300);
+        for (int d = 0; d < D; d++) {
+          f[D * i + d] -= k * dx[d];
+          f[D * j + d] += k * dx[d];
+        }
+        virial += k * dx[top] * dx[top];
+        worst = std::max(worst, delta / (alpha * (rr[i] + rr[j])));
+      }
+      for (std::size_t i = 0; i < N; i++)
+        for (int d = 0; d < D; d++) {
+          const double l = lo[d], h = d == top ? H : hi[d], xi = x[D * i + d];
+          const double dl = a[i] - (xi - l), dh = a[i] - (h - xi);
+          if (dl > 0.0) {
+            f[D * i + d] += dl;
+            if (d == top) virial += dl * (xi - l);
+            worst = std::max(worst, dl / (alpha * rr[i]));
+          }
+          if (dh > 0.0) {
+            f[D * i + d] -= dh;
+            if (d == top) virial += dh * (h - xi);
+            worst = std::max(worst, dh / (alpha * rr[i]));
+          }
+        }
+      Pint = virial / (area * H);
+      return worst;
+    };
+
+    // FIRE parameters of Bitzek et al. (2006); unit masses, stiffness 1
+    const double dtmax = 0.2, finc = 1.1, fdec = 0.5, astart = 0.1, falpha = 0.99;
+    const int nmin = 5;
+    double dt = 0.05, afire = astart;
+    int npos = 0;
+    // pressure schedule: compress at 1e-2, then lower by 4x to the final pressure
+    // (mean contact force ~ P d^(D-1) = mean overlap, here alpha / 10 in 2D)
+    double Pfinal = D == 2 ? alpha / 20.0 : alpha / 80.0;
+    double Ptarget = 1e-2;
+    const double gamma = 0.1, epsmax = 2e-3;
+
+    rebuild();
+    int it = 0;
+    for (; it < max_iterations; it++) {
+      const double worst = forces();
+      double fmax2 = 0.0, power = 0.0, vnorm2 = 0.0, fnorm2 = 0.0;
+      for (std::size_t k = 0; k < D * N; k++) {
+        fmax2 = std::max(fmax2, f[k] * f[k]);
+        power += f[k] * v[k];
+        vnorm2 += v[k] * v[k];
+        fnorm2 += f[k] * f[k];
+      }
+      // convergence of the current stage
+      const double fscale = (D == 2 ? 2.0 : 4.0) * Ptarget; // mean contact force ~ P d^(D-1)
+      if (std::sqrt(fmax2) < 0.1 * fscale && std::fabs(Pint - Ptarget) < 0.05 * Ptarget) {
+        if (Ptarget <= Pfinal && worst < 1.0) break;
+        // a few contacts carry forces well above the mean: lower the pressure
+        if (Ptarget <= Pfinal) Pfinal /= 2.0 * worst;
+        Ptarget = std::max(Pfinal, 0.25 * Ptarget);
+      }
+
+      // FIRE: velocity mixing, then a semi-implicit Euler step
+      double keep = 1.0, mix = 0.0;
+      if (power > 0.0) {
+        keep = 1.0 - afire;
+        mix = afire * std::sqrt(vnorm2 / std::max(fnorm2, 1e-300));
+        if (++npos > nmin) {
+          dt = std::min(dt * finc, dtmax);
+          afire *= falpha;
+        }
+      } else {
+        keep = 0.0;
+        dt *= fdec;
+        afire = astart;
+        npos = 0;
+      }
+      // affine barostat on the bed height
+      const double eps = std::max(-epsmax, std::min(epsmax, gamma * (Pint - Ptarget)));
+      H *= 1.0 + eps;
+      strain *= 1.0 + eps;
+      double move2 = 0.0;
+      for (std::size_t i = 0; i < N; i++) {
+        double m2 = 0.0;
+        for (int d = 0; d < D; d++) {
+          const std::size_t k = D * i + d;
+          v[k] = keep * v[k] + mix * f[k] + f[k] * dt;
+          x[k] += v[k] * dt;
+          if (d == top) {
+            x[k] *= 1.0 + eps;
+            xb[k] *= 1.0 + eps;
+          }
+          m2 += (x[k] - xb[k]) * (x[k] - xb[k]);
+        }
+        move2 = std::max(move2, m2);
+      }
+      if (2.0 * std::sqrt(move2) + std::fabs(strain - 1.0) * (2.0 * amax + skin) > skin) rebuild();
+    }
+    for (std::size_t k = 0; k < N; k++)
+      for (int d = 0; d < D; d++) xin[id[k]][d] = x[D * k + d];
+    return it;
+  }
+};
+
+/* ----------------------------------------------------------------------
+   Jamming by pressure-controlled energy minimisation.
+
+   Soft disks of radii a_i = r_i (1 + alpha), alpha = tau / 2, repel with the
+   harmonic energy (1/2) delta^2 (delta = overlap; lengths in units of the
+   mean radius), and so do the walls. FIRE (Bitzek et al. 2006) relaxes the
+   positions; after each step the bed height H and all vertical coordinates
+   are scaled affinely by 1 + eps, eps ~ (P_int - P) (Berendsen-type
+   barostat), where P_int is the vertical virial stress. The bed is first
+   compressed at a high pressure and then brought to a pressure at which the
+   mean overlap is ~alpha / 10, so the jammed contact network of O'Hern et al.
+   (2003) is kept while no overlap of the a_i exceeds alpha r: the disks of
+   radii r_i then do not overlap and touching ones have gaps below tau r.
+------------------------------------------------------------------------- */
+
+Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
+{
+  const int D = opt.dimension;
+  if (D != 2 && D != 3) throw GeometryError("packing dimension must be 2 or 3");
+  if (radii.empty()) throw GeometryError("no disks to pack");
+  if (!(opt.tolerance > 0.0 && opt.tolerance < 0.1))
+    throw GeometryError("packing tolerance " + str(opt.tolerance) + " must be in (0, 0.1)");
+  const int top = D - 1;
+  const char *axis = "xyz";
+  double rmax = 0.0, rsum = 0.0, volume = 0.0;
+  for (double r : radii) {
+    if (!(r > 0.0)) throw GeometryError("disk radius " + str(r) + " must be > 0");
+    rmax = std::max(rmax, r);
+    rsum += r;
+    volume += ballVolume(r, D);
+  }
+  const double alpha = 0.5 * opt.tolerance;
+  for (int d = 0; d < D; d++)
+    if (!(opt.hi[d] - opt.lo[d] >= 2.0 * rmax * (1.0 + alpha)))
+      throw GeometryError("container " + std::string(1, axis[d]) + " extent " +
+                          str(opt.hi[d] - opt.lo[d]) + " is too small for a disk of radius " +
+                          str(rmax));
+  double base = 1.0; // floor area (width in 2D)
+  for (int d = 0; d < top; d++) base *= opt.hi[d] - opt.lo[d];
+  const double height = opt.hi[top] - opt.lo[top];
+  // densest packings: hexagonal (2D), fcc (3D); beyond them no bed can fit
+  const double densest = D == 2 ? M_PI / (2.0 * std::sqrt(3.0)) : M_PI / (3.0 * std::sqrt(2.0));
+  if (volume / (base * height) > densest)
+    throw GeometryError("the disks need a packing fraction of " + str(volume / (base * height)) +
+                        " to fit in the container, beyond the densest packing (" + str(densest) +
+                        ")");
+
+  // scaled units: lengths / mean radius, floor at 0
+  const std::size_t N = radii.size();
+  const double L = rsum / N;
+  std::vector<double> a(N), rr(N);
+  for (std::size_t i = 0; i < N; i++) {
+    rr[i] = radii[i] / L;
+    a[i] = rr[i] * (1.0 + alpha);
+  }
+  const double amax = rmax / L * (1.0 + alpha);
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (int d = 0; d < D; d++) {
+    lo[d] = (opt.lo[d] - opt.lo[top] * (d == top)) / L;
+    hi[d] = (opt.hi[d] - opt.lo[top] * (d == top)) / L;
+    if (d == top) lo[d] = 0.0;
+  }
+  const double Hmax = hi[top];
+  double area = base / std::pow(L, D - 1);
+
+  // random loose start at packing fraction 0.5 (the overlaps are pushed apart first)
+  // a stream of its own: drawRadii with the same seed must not correlate radii and positions
+  std::uint64_t z = opt.seed + 0x9e3779b97f4a7c15ULL; // splitmix64 finaliser
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  PackingRandom rng(z ^ (z >> 31));
+  double H = std::max(volume / std::pow(L, D) / (0.5 * area), 2.0 * amax);
+  std::vector<std::array<double, 3>> x0(N);
+  for (std::size_t i = 0; i < N; i++) {
+    x0[i] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < D; d++) {
+      const double l = d == top ? 0.0 : lo[d], h = d == top ? H : hi[d];
+      x0[i][d] = l + a[i] + (h - l - 2 * a[i]) * rng.uniform();
+    }
+  }
+  Minimiser m;
+  for (int d = 0; d < 3; d++) {
+    m.lo[d] = lo[d];
+    m.hi[d] = hi[d];
+  }
+  m.H = H;
+  m.alpha = alpha;
+  m.amax = amax;
+  m.area = area;
+  m.max_iterations = opt.max_iterations;
+  const int it = D == 2 ? m.run<2>(x0, a, rr) : m.run<3>(x0, a, rr);
+  H = m.H;
+  const auto &x = x0;
+  if (it >= opt.max_iterations)
+    throw GeometryError("packing did not converge in " + std::to_string(opt.max_iterations) +
+                        " iterations");
+  if (H > Hmax * (1.0 + 1e-12))
+    throw GeometryError("the jammed bed of " + std::to_string(N) + " disks is " + str(H * L) +
+                        " high, more than the container's " + str(Hmax * L) +
+                        " (jammed packing fraction " + str(volume / (base * H * L)) +
+                        "; filling the container would need " + str(volume / (base * Hmax * L)) +
+                        ")");
+
+  Packing out;
+  out.dimension = D;
+  out.radius = radii;
+  out.centre.resize(N);
+  for (std::size_t i = 0; i < N; i++) {
+    out.centre[i] = {0.0, 0.0, 0.0};
+    for (int d = 0; d < D; d++) out.centre[i][d] = x[i][d] * L + (d == top ? opt.lo[top] : 0.0);
+  }
+  for (int d = 0; d < 3; d++) {
+    out.lo[d] = d < D ? opt.lo[d] : 0.0;
+    out.hi[d] = d < D ? opt.hi[d] : 0.0;
+  }
+  out.hi[top] = std::min(opt.hi[top], opt.lo[top] + H * L);
+  out.fraction = volume / (base * (out.hi[top] - out.lo[top]));
+  out.iterations = it;
+  return out;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double fractionInside(const Packing &p, const double *lo, const double *hi, int samples)
+{
+  const int D = p.dimension;
+  double rmax = 0.0;
+  for (double r : p.radius) rmax = std::max(rmax, r);
+  // bucket the disks once: a sample point looks at its cell and the neighbours
+  const double cs = 2.0 * rmax;
+  int n[3] = {1, 1, 1};
+  for (int d = 0; d < D; d++) n[d] = std::max(1, static_cast<int>((p.hi[d] - p.lo[d]) / cs));
+  std::vector<std::vector<std::size_t>> cell(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
+  auto index = [&](const double *x, int *c) {
+    for (int d = 0; d < 3; d++)
+      c[d] = d < D ? std::min(n[d] - 1, std::max(0, static_cast<int>((x[d] - p.lo[d]) /
+                                                                     (p.hi[d] - p.lo[d]) * n[d])))
+                   : 0;
+  };
+  for (std::size_t i = 0; i < p.centre.size(); i++) {
+    int c[3];
+    index(p.centre[i].data(), c);
+    cell[(static_cast<std::size_t>(c[2]) * n[1] + c[1]) * n[0] + c[0]].push_back(i);
+  }
+  std::size_t hit = 0, total = 0;
+  int m[3] = {samples, samples, D == 3 ? samples : 1};
+  for (int k = 0; k < m[2]; k++)
+    for (int j = 0; j < m[1]; j++)
+      for (int i = 0; i < m[0]; i++) {
+        const int ijk[3] = {i, j, k};
+        double x[3] = {0, 0, 0};
+        for (int d = 0; d < D; d++) x[d] = lo[d] + (hi[d] - lo[d]) * (ijk[d] + 0.5) / samples;
+        int c[3];
+        index(x, c);
+        bool covered = false;
+        for (int dz = (D == 3 ? -1 : 0); dz <= (D == 3 ? 1 : 0) && !covered; dz++)
+          for (int dy = -1; dy <= 1 && !covered; dy++)
+            for (int dx = -1; dx <= 1 && !covered; dx++) {
+              const int o[3] = {c[0] + dx, c[1] + dy, c[2] + dz};
+              if (o[0] < 0 || o[1] < 0 || o[2] < 0 || o[0] >= n[0] || o[1] >= n[1] || o[2] >= n[2])
+                continue;
+              for (std::size_t q :
+                   cell[(static_cast<std::size_t>(o[2]) * n[1] + o[1]) * n[0] + o[0]]) {
+                double d2 = 0.0;
+                for (int d = 0; d < D; d++) d2 += (x[d] - p.centre[q][d]) * (x[d] - p.centre[q][d]);
+                if (d2 < p.radius[q] * p.radius[q]) {
+                  covered = true;
+                  break;
+                }
+              }
+            }
+        hit += covered;
+        total++;
+      }
+  return static_cast<double>(hit) / total;
+}
+
+GapReport smallestGaps(const Packing &p)
+{
+  const int D = p.dimension;
+  GapReport g;
+  g.pair = g.wall = std::numeric_limits<double>::infinity();
+  double rmax = 0.0;
+  for (double r : p.radius) rmax = std::max(rmax, r);
+  CellGrid grid(D, p.lo, p.hi, 2.0 * rmax);
+  grid.build(p.centre);
+  grid.forEachPair([&](std::size_t i, std::size_t j) {
+    double d2 = 0.0;
+    for (int d = 0; d < D; d++)
+      d2 += (p.centre[i][d] - p.centre[j][d]) * (p.centre[i][d] - p.centre[j][d]);
+    const double gap = std::sqrt(d2) - p.radius[i] - p.radius[j];
+    if (gap < g.pair) {
+      g.pair = gap;
+      g.pair_i = i;
+      g.pair_j = j;
+    }
+  });
+  for (std::size_t i = 0; i < p.centre.size(); i++)
+    for (int d = 0; d < D; d++) {
+      const double gap = std::min(p.centre[i][d] - p.lo[d], p.hi[d] - p.centre[i][d]) - p.radius[i];
+      if (gap < g.wall) {
+        g.wall = gap;
+        g.wall_i = i;
+      }
+    }
+  return g;
+}
+
+bool directionsBlockEveryMove(const std::vector<std::array<double, 3>> &n, int dimension)
+{
+  const std::size_t k = n.size();
+  if (k < static_cast<std::size_t>(dimension + 1)) return false;
+  const double eps = 1e-9;
+  if (dimension == 2) {
+    // blocked iff the largest angular gap between contact directions is < pi
+    std::vector<double> ang(k);
+    for (std::size_t i = 0; i < k; i++) ang[i] = std::atan2(n[i][1], n[i][0]);
+    std::sort(ang.begin(), ang.end());
+    double gap = ang.front() + 2.0 * M_PI - ang.back();
+    for (std::size_t i = 1; i < k; i++) gap = std::max(gap, ang[i] - ang[i - 1]);
+    return gap < M_PI - eps;
+  }
+  // 3D: the cone {u : u . n_k <= 0 for all k} is {0} iff no candidate works.
+  // A nonzero cone has an extreme ray normal to two contact directions
+  // (+-n_a x n_b), or, if all directions are collinear, contains -n_a or a
+  // perpendicular.
+  auto movable = [&](const double *u) {
+    for (const auto &m : n)
+      if (u[0] * m[0] + u[1] * m[1] + u[2] * m[2] > eps) return false;
+    return true;
+  };
+  bool independent = false;
+  for (std::size_t a = 0; a < k; a++) {
+    const double u[3] = {-n[a][0], -n[a][1], -n[a][2]};
+    if (movable(u)) return false;
+    for (std::size_t b = a + 1; b < k; b++) {
+      double c[3] = {n[a][1] * n[b][2] - n[a][2] * n[b][1], n[a][2] * n[b][0] - n[a][0] * n[b][2],
+                     n[a][0] * n[b][1] - n[a][1] * n[b][0]};
+      const double norm = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+      if (norm < 1e-12) continue;
+      independent = true;
+      for (double &ci : c) ci /= norm;
+      const double m[3] = {-c[0], -c[1], -c[2]};
+      if (movable(c) || movable(m)) return false;
+    }
+  }
+  return independent;
+}
+
+JammingReport jammingReport(const Packing &p, double tolerance)
+{
+  const int D = p.dimension;
+  const std::size_t N = p.centre.size();
+  std::vector<std::vector<std::array<double, 3>>> dirs(N);
+  double rmax = 0.0;
+  for (double r : p.radius) rmax = std::max(rmax, r);
+  CellGrid grid(D, p.lo, p.hi, 2.0 * rmax * (1.0 + tolerance));
+  grid.build(p.centre);
+  grid.forEachPair([&](std::size_t i, std::size_t j) {
+    std::array<double, 3> u = {0, 0, 0};
+    double d2 = 0.0;
+    for (int d = 0; d < D; d++) {
+      u[d] = p.centre[j][d] - p.centre[i][d];
+      d2 += u[d] * u[d];
+    }
+    const double dist = std::sqrt(d2);
+    if (dist - p.radius[i] - p.radius[j] > 0.5 * tolerance * (p.radius[i] + p.radius[j])) return;
+    for (double &c : u) c /= dist;
+    dirs[i].push_back(u);
+    for (double &c : u) c = -c;
+    dirs[j].push_back(u);
+  });
+  JammingReport rep;
+  std::size_t contacts = 0;
+  for (std::size_t i = 0; i < N; i++) {
+    for (int d = 0; d < D; d++) {
+      std::array<double, 3> u = {0, 0, 0};
+      if (p.centre[i][d] - p.lo[d] - p.radius[i] <= tolerance * p.radius[i]) {
+        u[d] = -1.0;
+        dirs[i].push_back(u);
+      }
+      if (p.hi[d] - p.centre[i][d] - p.radius[i] <= tolerance * p.radius[i]) {
+        u[d] = 1.0;
+        dirs[i].push_back(u);
+      }
+    }
+    if (directionsBlockEveryMove(dirs[i], D)) {
+      rep.jammed++;
+      contacts += dirs[i].size();
+    } else {
+      rep.rattlers++;
+      rep.rattler_index.push_back(i);
+    }
+  }
+  rep.mean_contacts = rep.jammed ? static_cast<double>(contacts) / rep.jammed : 0.0;
+  return rep;
+}
+
+/* ---------------------------------------------------------------------- */
+
+EnclosingCircle smallestEnclosingCircle(const std::vector<std::array<double, 2>> &points)
+{
+  // Welzl (1991), iterative form; points shuffled with a fixed seed so the
+  // expected time is linear and the result reproducible.
+  std::vector<std::array<double, 2>> P = points;
+  PackingRandom rng(12345);
+  for (std::size_t i = P.size(); i > 1; i--)
+    std::swap(P[i - 1], P[static_cast<std::size_t>(rng.uniform() * i)]);
+  auto inside = [](const EnclosingCircle &c, const std::array<double, 2> &p) {
+    return std::hypot(p[0] - c.x, p[1] - c.y) <= c.r * (1.0 + 1e-12) + 1e-300;
+  };
+  auto two = [](const std::array<double, 2> &a, const std::array<double, 2> &b) {
+    EnclosingCircle c;
+    c.x = 0.5 * (a[0] + b[0]);
+    c.y = 0.5 * (a[1] + b[1]);
+    c.r = 0.5 * std::hypot(a[0] - b[0], a[1] - b[1]);
+    return c;
+  };
+  auto three = [&](const std::array<double, 2> &a, const std::array<double, 2> &b,
+                   const std::array<double, 2> &c) {
+    const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    const double d = 2.0 * (bx * cy - by * cx);
+    if (std::fabs(d) < 1e-300) { // collinear: the widest pair
+      EnclosingCircle e = two(a, b), f = two(a, c), g = two(b, c);
+      return e.r >= f.r && e.r >= g.r ? e : (f.r >= g.r ? f : g);
+    }
+    const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    EnclosingCircle e;
+    e.x = a[0] + (cy * b2 - by * c2) / d;
+    e.y = a[1] + (bx * c2 - cx * b2) / d;
+    e.r = std::hypot(e.x - a[0], e.y - a[1]);
+    return e;
+  };
+  EnclosingCircle c;
+  if (P.empty()) return c;
+  c.x = P[0][0];
+  c.y = P[0][1];
+  for (std::size_t i = 1; i < P.size(); i++) {
+    if (inside(c, P[i])) continue;
+    c = {P[i][0], P[i][1], 0.0};
+    for (std::size_t j = 0; j < i; j++) {
+      if (inside(c, P[j])) continue;
+      c = two(P[i], P[j]);
+      for (std::size_t k = 0; k < j; k++)
+        if (!inside(c, P[k])) c = three(P[i], P[j], P[k]);
+    }
+  }
+  return c;
+}
+
+} // namespace peridem

@@ -1,0 +1,290 @@
+// Jammed disk/sphere packings (grain-shape seed §7-7.1, issue 12): exact
+// no-overlap and no-wall-crossing checks, the local jamming criterion of the
+// seed's Definition 7.1, packing fractions against known values, radius
+// distributions and input errors.
+#include "peridem_geometry_packing.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+using namespace peridem;
+
+namespace {
+const double tau = 1e-3; // contact tolerance of PackingOptions (default)
+
+Packing pack2d(std::size_t n, double width, double height, std::uint64_t seed = 3,
+               RadiusDistribution dist = RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1))
+{
+  PackingOptions o;
+  o.dimension = 2;
+  o.hi[0] = width;
+  o.hi[1] = height;
+  o.seed = seed;
+  return packSpheres(drawRadii(dist, n, seed), o);
+}
+
+std::vector<std::array<double, 3>> dirs(std::initializer_list<double> degrees)
+{
+  std::vector<std::array<double, 3>> out;
+  for (double a : degrees) out.push_back({std::cos(a * M_PI / 180), std::sin(a * M_PI / 180), 0.0});
+  return out;
+}
+
+// Definition 7.1 directly: displacing a backbone disk by s in any of 72
+// directions makes it overlap a disk or cross a wall (brute force, no cell grid).
+std::size_t movableBackboneDisks(const Packing &p, const JammingReport &rep, double s)
+{
+  std::vector<bool> rattler(p.centre.size(), false);
+  for (auto i : rep.rattler_index) rattler[i] = true;
+  std::size_t movable = 0;
+  for (std::size_t i = 0; i < p.centre.size(); i++) {
+    if (rattler[i]) continue;
+    bool any_free = false;
+    for (int k = 0; k < 72 && !any_free; k++) {
+      const double x = p.centre[i][0] + s * p.radius[i] * std::cos(k * M_PI / 36);
+      const double y = p.centre[i][1] + s * p.radius[i] * std::sin(k * M_PI / 36);
+      bool blocked = x - p.radius[i] < p.lo[0] || x + p.radius[i] > p.hi[0] ||
+                     y - p.radius[i] < p.lo[1] || y + p.radius[i] > p.hi[1];
+      for (std::size_t j = 0; j < p.centre.size() && !blocked; j++)
+        if (j != i &&
+            std::hypot(x - p.centre[j][0], y - p.centre[j][1]) < p.radius[i] + p.radius[j])
+          blocked = true;
+      any_free = !blocked;
+    }
+    movable += any_free;
+  }
+  return movable;
+}
+} // namespace
+
+TEST(GeometryPacking, DistributionsDrawWhatTheySay)
+{
+  const auto u = drawRadii(RadiusDistribution::uniform(0.3, 1.1), 20000, 5);
+  const auto n = drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 5);
+  const auto l = drawRadii(RadiusDistribution::list({0.5, 0.7}), 20000, 5);
+  auto mean = [](const std::vector<double> &v) {
+    return std::accumulate(v.begin(), v.end(), 0.0) / v.size();
+  };
+  auto sd = [&](const std::vector<double> &v) {
+    const double m = mean(v);
+    double s = 0.0;
+    for (double x : v) s += (x - m) * (x - m);
+    return std::sqrt(s / (v.size() - 1));
+  };
+  for (double r : u) EXPECT_TRUE(r >= 0.3 && r < 1.1);
+  for (double r : n) EXPECT_TRUE(r >= 0.4 && r <= 1.1);
+  for (double r : l) EXPECT_TRUE(r == 0.5 || r == 0.7);
+  // uniform: mean 0.7, sd 0.8 / sqrt(12); normal: truncation at 4.4 and 3.3 sd
+  // changes the moments by < 1e-3; 5 standard errors of the sample mean
+  EXPECT_NEAR(mean(u), 0.7, 5 * 0.231 / std::sqrt(20000.0));
+  EXPECT_NEAR(sd(u), 0.8 / std::sqrt(12.0), 3e-3);
+  EXPECT_NEAR(mean(n), 0.8, 5 * 0.09 / std::sqrt(20000.0));
+  EXPECT_NEAR(sd(n), 0.09, 2e-3);
+  EXPECT_NEAR(mean(l), 0.6, 5 * 0.1 / std::sqrt(20000.0));
+  // the same seed, the same radii; another seed, others
+  EXPECT_EQ(n, drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 5));
+  EXPECT_NE(n, drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 6));
+}
+
+TEST(GeometryPacking, BadDistributionsAreRefused)
+{
+  EXPECT_THROW(RadiusDistribution::uniform(0.0, 1.0).validate(), GeometryError);
+  EXPECT_THROW(RadiusDistribution::uniform(-1.0, 1.0).validate(), GeometryError);
+  EXPECT_THROW(RadiusDistribution::uniform(1.0, 0.5).validate(), GeometryError);
+  EXPECT_THROW(RadiusDistribution::normal(0.8, -0.1, 0.4, 1.1).validate(), GeometryError);
+  EXPECT_THROW(RadiusDistribution::normal(5.0, 0.1, 0.4, 1.1).validate(), GeometryError);
+  EXPECT_THROW(RadiusDistribution::list({}).validate(), GeometryError);
+  EXPECT_THROW(RadiusDistribution::list({0.5, 0.0}).validate(), GeometryError);
+  EXPECT_NO_THROW(RadiusDistribution::normal(0.8, 0.0, 0.4, 1.1).validate());
+}
+
+TEST(GeometryPacking, JammingCriterionOnHandMadeContacts)
+{
+  // 2D: immobile iff the contact directions leave no angular gap >= pi
+  EXPECT_TRUE(directionsBlockEveryMove(dirs({90, 210, 330}), 2));
+  EXPECT_FALSE(directionsBlockEveryMove(dirs({0, 180}), 2));     // slides along y
+  EXPECT_FALSE(directionsBlockEveryMove(dirs({0, 90, 180}), 2)); // free to go down
+  EXPECT_FALSE(directionsBlockEveryMove(dirs({10, 60, 120, 170}), 2));
+  EXPECT_TRUE(directionsBlockEveryMove(dirs({0, 90, 180, 271}), 2));
+  EXPECT_TRUE(directionsBlockEveryMove(dirs({0, 90, 180, 270}), 2)); // a square cage
+  // 3D: a tetrahedron's vertex directions block, any three of them do not
+  const double s = 1.0 / std::sqrt(3.0);
+  std::vector<std::array<double, 3>> tet = {{s, s, s}, {s, -s, -s}, {-s, s, -s}, {-s, -s, s}};
+  EXPECT_TRUE(directionsBlockEveryMove(tet, 3));
+  tet.pop_back();
+  EXPECT_FALSE(directionsBlockEveryMove(tet, 3));
+  // the six faces of a cube block; five of them (or four in a plane) do not
+  std::vector<std::array<double, 3>> cube = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                             {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  EXPECT_TRUE(directionsBlockEveryMove(cube, 3));
+  EXPECT_FALSE(directionsBlockEveryMove({cube.begin(), cube.begin() + 4}, 3));
+  cube.pop_back();
+  EXPECT_FALSE(directionsBlockEveryMove(cube, 3));
+  // collinear opposite contacts leave the perpendicular plane free
+  EXPECT_FALSE(directionsBlockEveryMove({{1, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {-1, 0, 0}}, 3));
+}
+
+TEST(GeometryPacking, DisksNeverOverlapOrCrossAWallAndAreJammed)
+{
+  // (disks, container width): the paper's aspect of ~0.6 bed width per disk row
+  const std::pair<std::size_t, double> cases[] = {{100, 10.0}, {500, 25.0}, {1500, 40.0}};
+  for (const auto &c : cases) {
+    const Packing p = pack2d(c.first, c.second, 200.0);
+    ASSERT_EQ(p.centre.size(), c.first);
+    const GapReport g = smallestGaps(p);
+    // exact: distances minus radii, every pair in reach, every wall incl. the lid
+    EXPECT_GE(g.pair, 0.0) << c.first << " disks " << g.pair_i << " " << g.pair_j;
+    EXPECT_GE(g.wall, 0.0) << c.first << " disks, disk " << g.wall_i;
+    // and the smallest gaps are contacts (within tau r), not loose spacing
+    EXPECT_LT(g.pair, tau * 0.8);
+    EXPECT_LT(g.wall, tau * 0.8);
+    double area = 0.0;
+    for (double r : p.radius) area += M_PI * r * r;
+    EXPECT_NEAR(p.fraction, area / ((p.hi[0] - p.lo[0]) * (p.hi[1] - p.lo[1])), 1e-12);
+    const JammingReport j = jammingReport(p, tau);
+    // rattlers: caged disks of no load, a few to ~15 % in jammed polydisperse
+    // packings (O'Hern et al. 2003); measured 7-16 % here
+    EXPECT_LE(j.rattlers, c.first / 5) << c.first << " disks";
+    // isostatic frictionless backbone: 2d = 4 contacts per disk (walls count)
+    EXPECT_GT(j.mean_contacts, 3.5);
+    // Definition 7.1 checked by brute force: a step of r / 10 in any direction
+    // is blocked for (almost) every backbone disk. Not all: with gaps up to
+    // tau r, a disk whose contacts leave an angular gap just below pi can slide
+    // a little (measured: 0-2 of ~1300 at r / 10, ~7 % at r / 100).
+    EXPECT_LE(movableBackboneDisks(p, j, 0.1), c.first / 100) << c.first << " disks";
+    // jammed polydisperse disks: the issue asks for >= 0.80, RCP is ~0.84
+    if (c.first >= 500)
+      EXPECT_GE(p.fraction, 0.80) << c.first << " disks";
+    else
+      EXPECT_GE(p.fraction, 0.76) << "narrow container: wall layers";
+  }
+}
+
+TEST(GeometryPacking, RattlersAreFoundAndBlockingIsNotTrivial)
+{
+  // a disk alone in a box is not jammed; one disk that fills the width
+  // between two walls is still free to move up and down
+  Packing p;
+  p.dimension = 2;
+  p.hi[0] = 2.0;
+  p.hi[1] = 5.0;
+  p.centre = {{1.0, 2.5, 0.0}};
+  p.radius = {1.0};
+  JammingReport j = jammingReport(p, tau);
+  EXPECT_EQ(j.rattlers, 1u);
+  p.hi[1] = 2.0;
+  p.centre = {{1.0, 1.0, 0.0}};
+  j = jammingReport(p, tau); // now touches all four walls
+  EXPECT_EQ(j.jammed, 1u);
+}
+
+TEST(GeometryPacking, SpheresNeverOverlapAndAreDense)
+{
+  PackingOptions o;
+  o.dimension = 3;
+  o.hi[0] = o.hi[1] = 10.0;
+  o.hi[2] = 100.0;
+  const Packing p =
+      packSpheres(drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 500, 9), o);
+  const GapReport g = smallestGaps(p);
+  EXPECT_GE(g.pair, 0.0);
+  EXPECT_GE(g.wall, 0.0);
+  EXPECT_LT(g.pair, tau * 0.8);
+  const JammingReport j = jammingReport(p, tau);
+  EXPECT_LE(j.rattlers, 500u / 8);
+  EXPECT_GT(j.mean_contacts, 5.0);
+  // whole box: the wall layers of a 6-diameter-wide box lower it (~0.57);
+  // away from the walls (one mean diameter) random close packing: >= 0.60
+  EXPECT_GE(p.fraction, 0.55);
+  const double lo[3] = {1.6, 1.6, 1.6}, hi[3] = {8.4, 8.4, p.hi[2] - 1.6};
+  EXPECT_GE(fractionInside(p, lo, hi, 60), 0.60);
+}
+
+TEST(GeometryPacking, PaperBedsReachThePaperFraction)
+{
+  // grain-shape seed §7.3: 1490 disks of radius 0.4-1.1 mm (mean 0.8, sd 0.09)
+  // in a 50 mm wide container (100 mm high); the seed's mesh method reaches 0.80
+  const Packing p = pack2d(1490, 50.0, 100.0, 12);
+  EXPECT_GE(p.fraction, 0.80);
+  EXPECT_LE(p.hi[1], 100.0);
+  EXPECT_GE(smallestGaps(p).pair, 0.0);
+  // no size segregation: neither the radius nor its squared deviation from
+  // the mean correlates with x or height (radii and start positions come from
+  // one seed; a shared stream once put the extreme sizes at one side)
+  auto correlation = [](const std::vector<double> &a, const std::vector<double> &b) {
+    const double n = a.size();
+    double ma = 0, mb = 0, sab = 0, saa = 0, sbb = 0;
+    for (std::size_t i = 0; i < a.size(); i++) {
+      ma += a[i] / n;
+      mb += b[i] / n;
+    }
+    for (std::size_t i = 0; i < a.size(); i++) {
+      sab += (a[i] - ma) * (b[i] - mb);
+      saa += (a[i] - ma) * (a[i] - ma);
+      sbb += (b[i] - mb) * (b[i] - mb);
+    }
+    return sab / std::sqrt(saa * sbb);
+  };
+  const double mean = std::accumulate(p.radius.begin(), p.radius.end(), 0.0) / p.radius.size();
+  std::vector<double> dev2, pos[2];
+  for (std::size_t i = 0; i < p.radius.size(); i++) {
+    dev2.push_back((p.radius[i] - mean) * (p.radius[i] - mean));
+    for (int d = 0; d < 2; d++) pos[d].push_back(p.centre[i][d]);
+  }
+  for (int d = 0; d < 2; d++) { // 0.1 = 3.9 standard errors at n = 1490
+    EXPECT_LT(std::fabs(correlation(p.radius, pos[d])), 0.1) << "axis " << d;
+    EXPECT_LT(std::fabs(correlation(dev2, pos[d])), 0.1) << "axis " << d;
+  }
+  // and the same seed gives the same bed, number for number
+  const Packing q = pack2d(1490, 50.0, 100.0, 12);
+  EXPECT_EQ(p.centre, q.centre);
+  EXPECT_EQ(p.hi[1], q.hi[1]);
+}
+
+TEST(GeometryPacking, ContainerErrors)
+{
+  PackingOptions o;
+  o.hi[0] = 1.5;
+  o.hi[1] = 10.0;
+  // a disk wider than the container
+  EXPECT_THROW(packSpheres({1.0}, o), GeometryError);
+  // more disk area than the densest packing of the container can hold
+  o.hi[0] = 10.0;
+  EXPECT_THROW(packSpheres(std::vector<double>(40, 1.0), o), GeometryError);
+  // fits by area (fraction 0.86 < 0.907) but the jammed bed (0.79) is higher than the container
+  try {
+    packSpheres(drawRadii(RadiusDistribution::uniform(0.45, 0.55), 110, 1), o);
+    ADD_FAILURE() << "expected an error";
+  } catch (GeometryError &e) {
+    EXPECT_NE(std::string(e.what()).find("high"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(packSpheres({}, o), GeometryError);
+  EXPECT_THROW(packSpheres({0.5, -0.1}, o), GeometryError);
+}
+
+TEST(GeometryPacking, SmallestEnclosingCircle)
+{
+  // square of side 2: centre, radius sqrt 2
+  EnclosingCircle c = smallestEnclosingCircle({{1, 1}, {-1, 1}, {-1, -1}, {1, -1}, {0.2, 0.3}});
+  EXPECT_NEAR(c.x, 0.0, 1e-12);
+  EXPECT_NEAR(c.y, 0.0, 1e-12);
+  EXPECT_NEAR(c.r, std::sqrt(2.0), 1e-12);
+  // obtuse triangle: the longest side is the diameter
+  c = smallestEnclosingCircle({{0, 0}, {4, 0}, {2, 0.5}});
+  EXPECT_NEAR(c.x, 2.0, 1e-12);
+  EXPECT_NEAR(c.y, 0.0, 1e-12);
+  EXPECT_NEAR(c.r, 2.0, 1e-12);
+  // equilateral triangle: circumcircle
+  c = smallestEnclosingCircle({{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}});
+  EXPECT_NEAR(c.r, 1.0 / std::sqrt(3.0), 1e-12);
+  // random cloud: all inside, and no smaller circle about the found centre
+  PackingRandom rng(4);
+  std::vector<std::array<double, 2>> pts(300);
+  for (auto &q : pts) q = {rng.uniform() * 3, rng.uniform()};
+  c = smallestEnclosingCircle(pts);
+  double far = 0.0;
+  for (const auto &q : pts) far = std::max(far, std::hypot(q[0] - c.x, q[1] - c.y));
+  EXPECT_NEAR(far, c.r, 1e-9);
+}

@@ -1,0 +1,41 @@
+# create_peridem_bed (issue 12)
+
+# the packed-bed example: the same bed and grains on 1 and 2 ranks
+peridem_add_example_test(packed_bed packed-bed in.bed 1 2)
+
+# bad input: clear errors naming the command and the bad value
+set(_b ${_in}/bed/bed_box.in)
+set(_r "radius uniform 0.4 0.6 seed 1")
+peridem_add_error_test(bed_container_too_small ${_b}
+  "create_peridem_bed: container x extent 0.5 is too small for a disk of radius 0.5[0-9]*"
+  -var bed "count 10 ${_r} box 0 0.5 0 10")
+peridem_add_error_test(bed_zero_radius ${_b}
+  "create_peridem_bed: smallest radius 0 must be > 0"
+  -var bed "count 10 radius uniform 0 0.6 seed 1")
+peridem_add_error_test(bed_negative_radius ${_b}
+  "create_peridem_bed: radius -0.5 in the list must be > 0"
+  -var bed "count 10 radius list 0.5 -0.5 seed 1")
+peridem_add_error_test(bed_inverted_range ${_b}
+  "create_peridem_bed: inverted radius range: 0.8 > 0.4"
+  -var bed "count 10 radius normal 0.6 0.1 0.8 0.4 seed 1")
+peridem_add_error_test(bed_unreachable_fraction ${_b}
+  "create_peridem_bed: the disks need a packing fraction of .* beyond the densest packing"
+  -var bed "count 1000 ${_r}")
+peridem_add_error_test(bed_too_high ${_b}
+  "create_peridem_bed: the jammed bed of 55 disks is .* high, more than the container's 10"
+  -var bed "count 55 ${_r}")
+peridem_add_error_test(bed_unknown_distribution ${_b}
+  "create_peridem_bed: unknown radius distribution 'lognormal'"
+  -var bed "count 10 radius lognormal 0.5 0.1 seed 1")
+peridem_add_error_test(bed_no_seed ${_b}
+  "create_peridem_bed: no random seed given"
+  -var bed "count 10 radius uniform 0.4 0.6")
+peridem_add_error_test(bed_rc_too_large ${_b}
+  "create_peridem_bed: contact_radius 0.8.* leaves nothing of the smallest disk"
+  -var bed "count 10 ${_r} contact_radius 0.8")
+peridem_add_error_test(bed_unknown_shape ${_b}
+  "create_peridem_grains: unknown shape 'blob'"
+  -var bed "count 10 ${_r} labels blob 1" -var grains "blob")
+peridem_add_error_test(bed_no_label_lines ${_b}
+  "create_peridem_grains: no line of the positions file has label 'hexagon'"
+  -var bed "count 10 ${_r} labels disk 1" -var grains "hexagon")

@@ -1,0 +1,211 @@
+// create_peridem_bed (issue 12): grains placed from a jammed bed file are at
+// least R_c apart from each other and from the walls at step 0 (grain-shape
+// seed §7.1 step 5), each fills its security disk (diameter matched), the
+// labels pick the lines of each create_peridem_grains, and the bed file
+// reads back the disks it wrote. 1 vs 2 ranks: unittest/lammps/inputs/bed.cmake.
+
+#include "lammps_fixture.h"
+
+#include "atom.h"
+#include "lammps.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+struct Line {
+  double x, y, z, r, angle;
+  std::string label;
+};
+
+std::vector<Line> read_bed(const std::string &file)
+{
+  std::ifstream in(file);
+  std::vector<Line> out;
+  std::string s;
+  while (std::getline(in, s)) {
+    if (s.empty() || s[0] == '#') continue;
+    std::istringstream l(s);
+    Line b;
+    l >> b.x >> b.y >> b.z >> b.r >> b.angle >> b.label;
+    out.push_back(b);
+  }
+  return out;
+}
+
+const double Rc = 0.1, W = 10.0, H = 30.0;
+
+std::string bed_setup(const std::string &dir, const std::string &shapes)
+{
+  return "units lj\ndimension 2\nboundary f f p\natom_style peridem\natom_modify map array\n"
+         "region box block -0.5 10.5 -0.5 30.5 -0.1 0.1\n"
+         "create_box 2 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 0\n"
+         "special_bonds lj/coul 0.0 1.0 1.0\n"
+         "create_peridem_bed " +
+         dir + "bed.txt count 80 radius normal 0.8 0.09 0.4 1.1 seed 7 box 0 10 0 30 " +
+         "contact_radius 0.1 labels " + shapes;
+}
+
+} // namespace
+
+class CreatePeridemBed : public LammpsTest {};
+
+TEST_F(CreatePeridemBed, GrainsAreRcApartAtStepZero)
+{
+  const std::string dir = scratch();
+  command(bed_setup(dir, "disk 1 square 1 plus 1"));
+  const auto bed = read_bed(dir + "bed.txt");
+  ASSERT_EQ(bed.size(), 80u);
+  std::map<std::string, int> count;
+  for (const auto &b : bed) count[b.label]++;
+  EXPECT_EQ(count.size(), 3u);
+  for (const char *shape : {"disk", "square", "plus"})
+    command(std::string("create_peridem_grains 1 ") + shape +
+            " spacing 0.1 horizon 0.3 density 1 positions " + dir + "bed.txt");
+
+  Atom *atom = lmp->atom;
+  ASSERT_GT(atom->nlocal, 0);
+  // grain IDs follow the commands: disks, then squares, then pluses
+  EXPECT_EQ(atom->natoms, atom->nlocal);
+  // nearest node of another grain: cell grid of side R_c
+  std::unordered_map<long long, std::vector<int>> cells;
+  auto key = [](long long i, long long j) { return i * 100000 + j; };
+  for (int i = 0; i < atom->nlocal; i++)
+    cells[key(std::floor(atom->x[i][0] / Rc), std::floor(atom->x[i][1] / Rc))].push_back(i);
+  double closest = 1e30, wall = 1e30;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const long long ci = std::floor(atom->x[i][0] / Rc), cj = std::floor(atom->x[i][1] / Rc);
+    for (int di = -1; di <= 1; di++)
+      for (int dj = -1; dj <= 1; dj++) {
+        auto it = cells.find(key(ci + di, cj + dj));
+        if (it == cells.end()) continue;
+        for (int j : it->second)
+          if (atom->molecule[j] != atom->molecule[i])
+            closest = std::min(
+                closest, std::hypot(atom->x[i][0] - atom->x[j][0], atom->x[i][1] - atom->x[j][1]));
+      }
+    wall = std::min({wall, atom->x[i][0], W - atom->x[i][0], atom->x[i][1], H - atom->x[i][1]});
+  }
+  // nodes of different grains: no pair inside R_c (checked within one cell)
+  EXPECT_GE(closest, Rc);
+  EXPECT_GE(wall, Rc);
+
+  // each grain fills its security disk: a node of each grain reaches within a
+  // node spacing of the disk's circle (disk and square vertices touch it), none outside
+  std::map<tagint, double> reach;
+  const int ngrains = static_cast<int>(bed.size());
+  std::vector<Line> by_grain;
+  for (const char *shape : {"disk", "square", "plus"})
+    for (const auto &b : bed)
+      if (b.label == shape) by_grain.push_back(b);
+  ASSERT_EQ(static_cast<int>(by_grain.size()), ngrains);
+  for (int i = 0; i < atom->nlocal; i++) {
+    const Line &b = by_grain[atom->molecule[i] - 1];
+    const double d = std::hypot(atom->x[i][0] - b.x, atom->x[i][1] - b.y);
+    EXPECT_LE(d, b.r * (1 + 1e-12)) << "grain " << atom->molecule[i];
+    reach[atom->molecule[i]] = std::max(reach[atom->molecule[i]], d);
+  }
+  for (const auto &kv : reach) {
+    const Line &b = by_grain[kv.first - 1];
+    // lattice nodes lie within sqrt(2) h / 2 of the boundary; plus arm tips too
+    EXPECT_GT(kv.second, b.r - 0.1 * std::sqrt(2.0)) << "grain " << kv.first << " " << b.label;
+  }
+}
+
+TEST_F(CreatePeridemBed, BedFileLinesAreTheJammedDisksShrunkByHalfRc)
+{
+  const std::string dir = scratch();
+  command(bed_setup(dir, "a 1"));
+  const auto bed = read_bed(dir + "bed.txt");
+  // exact: security disks (radius + R_c/2) never overlap, nor cross the inset walls
+  for (std::size_t i = 0; i < bed.size(); i++) {
+    EXPECT_GE(bed[i].x - bed[i].r, Rc - 1e-12);
+    EXPECT_GE(W - bed[i].x - bed[i].r, Rc - 1e-12);
+    EXPECT_GE(bed[i].y - bed[i].r, Rc - 1e-12);
+    EXPECT_GE(bed[i].r, 0.4 - Rc / 2);
+    EXPECT_LE(bed[i].r, 1.1 - Rc / 2);
+    EXPECT_TRUE(bed[i].angle >= 0 && bed[i].angle < 360);
+    for (std::size_t j = i + 1; j < bed.size(); j++)
+      EXPECT_GE(std::hypot(bed[i].x - bed[j].x, bed[i].y - bed[j].y), bed[i].r + bed[j].r + Rc);
+  }
+  // the same seed writes the same file; placing it uses the file's angles
+  command("create_peridem_bed " + dir + "again.txt count 80 radius normal 0.8 0.09 0.4 1.1 " +
+          "seed 7 box 0 10 0 30 contact_radius 0.1 labels a 1");
+  std::ifstream f1(dir + "bed.txt"), f2(dir + "again.txt");
+  std::stringstream s1, s2;
+  s1 << f1.rdbuf();
+  s2 << f2.rdbuf();
+  EXPECT_EQ(s1.str(), s2.str());
+}
+
+TEST_F(CreatePeridemBed, MeshGrainsFillTheirSecurityDisks)
+{
+  // a Gmsh grain (unit square with a hole): its corners are on the smallest
+  // enclosing circle, so each grain reaches its disk's radius exactly
+  const std::string dir = scratch();
+  command(bed_setup(dir, "mesh 1"));
+  const auto bed = read_bed(dir + "bed.txt");
+  const std::string mesh =
+      std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/square_hole_v22.msh";
+  command("create_peridem_grains 1 gmsh " + mesh + " horizon 0.5 density 1 label mesh positions " +
+          dir + "bed.txt");
+  Atom *atom = lmp->atom;
+  std::map<tagint, double> reach;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const Line &b = bed[atom->molecule[i] - 1];
+    const double d = std::hypot(atom->x[i][0] - b.x, atom->x[i][1] - b.y);
+    reach[atom->molecule[i]] = std::max(reach[atom->molecule[i]], d);
+  }
+  ASSERT_EQ(reach.size(), bed.size());
+  for (const auto &kv : reach) EXPECT_NEAR(kv.second, bed[kv.first - 1].r, 1e-12);
+}
+
+TEST_F(CreatePeridemBed, SpheresAndBoxesIn3d)
+{
+  // a 3d bed: spheres and boxes inscribed in their security spheres, R_c apart
+  const std::string dir = scratch();
+  command("units lj\ndimension 3\nboundary f f f\natom_style peridem\natom_modify map array\n"
+          "region box block -0.5 6.5 -0.5 6.5 -0.5 20.5\n"
+          "create_box 2 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 0\n"
+          "special_bonds lj/coul 0.0 1.0 1.0\n"
+          "create_peridem_bed " +
+          dir +
+          "bed.txt count 40 radius uniform 0.8 1.1 seed 3 box 0 6 0 6 0 20 contact_radius 0.1 "
+          "labels sphere 1 box 1");
+  const auto bed = read_bed(dir + "bed.txt");
+  ASSERT_EQ(bed.size(), 40u);
+  command("create_peridem_grains 1 sphere spacing 0.25 horizon 0.6 density 1 positions " + dir +
+          "bed.txt");
+  command("create_peridem_grains 2 box spacing 0.25 horizon 0.6 density 1 positions " + dir +
+          "bed.txt");
+  std::vector<Line> by_grain;
+  for (const char *shape : {"sphere", "box"})
+    for (const auto &b : bed)
+      if (b.label == shape) by_grain.push_back(b);
+  Atom *atom = lmp->atom;
+  ASSERT_GT(atom->nlocal, 0);
+  double closest = 1e30, wall = 1e30;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const Line &b = by_grain[atom->molecule[i] - 1];
+    EXPECT_LE(std::sqrt(std::pow(atom->x[i][0] - b.x, 2) + std::pow(atom->x[i][1] - b.y, 2) +
+                        std::pow(atom->x[i][2] - b.z, 2)),
+              b.r * (1 + 1e-12));
+    wall = std::min(
+        {wall, atom->x[i][0], 6 - atom->x[i][0], atom->x[i][1], 6 - atom->x[i][1], atom->x[i][2]});
+    for (int j = 0; j < i; j++)
+      if (atom->molecule[j] != atom->molecule[i])
+        closest = std::min(closest, std::sqrt(std::pow(atom->x[i][0] - atom->x[j][0], 2) +
+                                              std::pow(atom->x[i][1] - atom->x[j][1], 2) +
+                                              std::pow(atom->x[i][2] - atom->x[j][2], 2)));
+  }
+  EXPECT_GE(closest, Rc);
+  EXPECT_GE(wall, Rc);
+}
