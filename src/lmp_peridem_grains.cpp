@@ -1,0 +1,40 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: per-grain reductions, see lmp_peridem_grains.h.
+------------------------------------------------------------------------- */
+
+#include "lmp_peridem_grains.h"
+
+#include "atom.h"
+#include "lammps.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+
+namespace PERIDEM {
+
+tagint max_grain_id(LAMMPS *lmp)
+{
+  const Atom *atom = lmp->atom;
+  tagint local = 0, global = 0;
+  for (int i = 0; i < atom->nlocal; i++) local = std::max(local, atom->molecule[i]);
+  MPI_Allreduce(&local, &global, 1, MPI_LMP_TAGINT, MPI_MAX, lmp->world);
+  return global;
+}
+
+std::vector<double> grain_reduce(LAMMPS *lmp, int groupbit, tagint maxmol, int ncol,
+                                 const std::function<void(int, double *)> &fill, MPI_Op op,
+                                 double init)
+{
+  const Atom *atom = lmp->atom;
+  const size_t n = size_t(maxmol + 1) * ncol;
+  std::vector<double> local(n, init), global(n, init);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    fill(i, &local[size_t(atom->molecule[i]) * ncol]);
+  }
+  MPI_Allreduce(local.data(), global.data(), int(n), MPI_DOUBLE, op, lmp->world);
+  return global;
+}
+
+} // namespace PERIDEM

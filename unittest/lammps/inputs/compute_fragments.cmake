@@ -1,0 +1,32 @@
+# compute peridem/fragments, peridem/grain, peridem/bed (issue 13)
+
+# cut pieces across subdomain boundaries: the gtest program on 2, 3 and 4 ranks
+foreach(_np 2 3 4)
+  add_test(NAME mpi${_np}.compute_peridem_fragments
+    COMMAND ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:test_compute_peridem_fragments>)
+endforeach()
+
+# a pulverised grain: the fragments equal an independent union-find over the
+# dumped bonds (unittest/scripts/fragments_union_find.py), on 1 and 3 ranks
+foreach(_np 1 3)
+  set(_dir ${CMAKE_CURRENT_BINARY_DIR}/fragments_pulverise_${_np})
+  file(MAKE_DIRECTORY ${_dir})
+  add_test(NAME fragments.pulverise_union_find_np${_np}
+    COMMAND bash -c "${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem> -in ${_in}/fragments/pulverise.in -log none -screen none && python3 ${PERIDEM_RUN}/fragments_union_find.py ."
+    WORKING_DIRECTORY ${_dir})
+endforeach()
+
+# bad input gets a clear error
+set(_fbox ${_in}/fragments/box.in)
+peridem_add_error_test(fragments_negative_min ${_fbox}
+  "Illegal compute peridem/fragments command: min nodes -1 must not be negative"
+  -var compute "peridem/fragments min nodes -1")
+peridem_add_error_test(fragments_min_kind ${_fbox}
+  "Illegal compute peridem/fragments command: min mass: expected nodes or volume"
+  -var compute "peridem/fragments min mass 2")
+peridem_add_error_test(fragments_unknown_keyword ${_fbox}
+  "Illegal compute peridem/fragments command: unknown keyword every"
+  -var compute "peridem/fragments every 10")
+peridem_add_error_test(fragments_atom_style ${_in}/fragments/atomic.in
+  "compute peridem/fragments requires atom style peridem"
+  -var compute "peridem/fragments")
