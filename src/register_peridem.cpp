@@ -16,6 +16,7 @@
 #include "bond_peridem.h"
 #include "compute_peridem_damage.h"
 #include "compute_peridem_fragments.h"
+#include "compute_peridem_grain.h"
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
@@ -115,6 +116,7 @@ void for_each_style(StyleSink &sink)
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
   sink.compute("peridem/fragments", &compute_creator<ComputePeridemFragments>);
+  sink.compute("peridem/grain", &compute_creator<ComputePeridemGrain>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
 }

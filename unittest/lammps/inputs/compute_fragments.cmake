@@ -30,3 +30,21 @@ peridem_add_error_test(fragments_unknown_keyword ${_fbox}
 peridem_add_error_test(fragments_atom_style ${_in}/fragments/atomic.in
   "compute peridem/fragments requires atom style peridem"
   -var compute "peridem/fragments")
+
+# compute peridem/grain: hand values on 2 and 4 ranks; bad input
+foreach(_np 2 4)
+  add_test(NAME mpi${_np}.compute_peridem_grain
+    COMMAND ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:test_compute_peridem_grain>)
+endforeach()
+peridem_add_error_test(grain_not_peridem_compute ${_fbox}
+  "compute peridem/grain: damage compute k is a compute ke, not peridem/damage"
+  -var before "compute k all ke" -var compute "peridem/grain damage k" -var thermo "c_c[1][1]")
+peridem_add_error_test(grain_fragments_not_peridem ${_fbox}
+  "compute peridem/grain: fragments compute k is a compute ke, not peridem/fragments"
+  -var before "compute k all ke" -var compute "peridem/grain fragments k" -var thermo "c_c[1][1]")
+peridem_add_error_test(grain_missing_compute ${_fbox}
+  "compute peridem/grain: damage compute nope does not exist"
+  -var compute "peridem/grain damage nope" -var thermo "c_c[1][1]")
+peridem_add_error_test(grain_atom_style ${_in}/fragments/atomic.in
+  "compute peridem/grain requires atom style peridem"
+  -var compute "peridem/grain")
