@@ -230,14 +230,7 @@ void ComputePeridemFragments::collect()
     f[MASS] += atom->rmass[i];
   }
 
-  const int nprocs = comm->nprocs;
-  int count = int(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> all(size_t(displs[nprocs - 1]) + counts[nprocs - 1]);
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
+  const std::vector<double> all = PERIDEM::gather_all(lmp, mine);
 
   // merge the pieces of a fragment that lie on several ranks
   const size_t n = all.size() / NCOLS;

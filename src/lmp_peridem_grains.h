@@ -32,6 +32,10 @@ std::vector<double> grain_reduce(LAMMPS_NS::LAMMPS *lmp, int groupbit, LAMMPS_NS
                                  int ncol, const std::function<void(int, double *)> &fill,
                                  MPI_Op op = MPI_SUM, double init = 0.0);
 
+// The concatenation over ranks (in rank order) of every rank's values, on
+// every rank.
+std::vector<double> gather_all(LAMMPS_NS::LAMMPS *lmp, const std::vector<double> &mine);
+
 } // namespace PERIDEM
 
 #endif

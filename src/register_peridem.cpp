@@ -14,6 +14,7 @@
 
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
+#include "compute_peridem_bed.h"
 #include "compute_peridem_damage.h"
 #include "compute_peridem_fragments.h"
 #include "compute_peridem_grain.h"
@@ -117,6 +118,7 @@ void for_each_style(StyleSink &sink)
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
   sink.compute("peridem/fragments", &compute_creator<ComputePeridemFragments>);
   sink.compute("peridem/grain", &compute_creator<ComputePeridemGrain>);
+  sink.compute("peridem/bed", &compute_creator<ComputePeridemBed>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
 }

@@ -48,3 +48,20 @@ peridem_add_error_test(grain_missing_compute ${_fbox}
 peridem_add_error_test(grain_atom_style ${_in}/fragments/atomic.in
   "compute peridem/grain requires atom style peridem"
   -var compute "peridem/grain")
+
+# compute peridem/bed: hand values on 2 ranks; bad input
+add_test(NAME mpi2.compute_peridem_bed
+  COMMAND ${PERIDEM_RUN}/mpirun.sh 2 $<TARGET_FILE:test_compute_peridem_bed>)
+peridem_add_error_test(bed_no_region ${_fbox}
+  "compute peridem/bed: region nope does not exist" -var compute "peridem/bed nope")
+peridem_add_error_test(bed_bad_top ${_fbox}
+  "Illegal compute peridem/bed command: top lid: expected surface, max, region or v_name"
+  -var before "region r block -3 3 -3 3 -0.5 0.5" -var compute "peridem/bed r top lid")
+peridem_add_error_test(bed_bad_bin ${_fbox}
+  "Illegal compute peridem/bed command: bin -1 must be positive"
+  -var before "region r block -3 3 -3 3 -0.5 0.5" -var compute "peridem/bed r bin -1")
+peridem_add_error_test(bed_unbounded_region ${_fbox}
+  "compute peridem/bed: region r has no bounding box"
+  -var before "region r plane 0 0 0 0 1 0" -var compute "peridem/bed r")
+peridem_add_error_test(bed_atom_style ${_in}/fragments/atomic.in
+  "compute peridem/bed requires atom style peridem" -var compute "peridem/bed r")
