@@ -19,8 +19,9 @@
 #include "bond.h"
 #include "comm.h"
 #include "domain.h"
-#include "lmp_peridem_image.h"
 #include "error.h"
+#include "lmp_peridem_grains.h"
+#include "lmp_peridem_image.h"
 #include "fix_peridem_bonds.h"
 #include "force.h"
 #include "memory.h"
@@ -189,17 +190,12 @@ void ComputePeridemDamage::grain_means()
   const int nlocal = atom->nlocal;
   const tagint *molecule = atom->molecule;
   const int *mask = atom->mask;
-  tagint maxmol_local = 0, maxmol = 0;
-  for (int i = 0; i < nlocal; i++) maxmol_local = std::max(maxmol_local, molecule[i]);
-  MPI_Allreduce(&maxmol_local, &maxmol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-
-  std::vector<double> local(2 * (maxmol + 1), 0.0), global(2 * (maxmol + 1), 0.0);
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    local[2 * molecule[i]] += damage[i][PHI];
-    local[2 * molecule[i] + 1] += 1.0;
-  }
-  MPI_Allreduce(local.data(), global.data(), int(global.size()), MPI_DOUBLE, MPI_SUM, world);
+  const tagint maxmol = PERIDEM::max_grain_id(lmp);
+  const std::vector<double> global =
+      PERIDEM::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
+        row[0] += damage[i][PHI];
+        row[1] += 1.0;
+      });
 
   double sum = 0.0;
   int ngrains = 0;

@@ -14,8 +14,11 @@
 
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
+#include "compute_peridem_bed.h"
 #include "compute_peridem_damage.h"
 #include "create_peridem_bed.h"
+#include "compute_peridem_fragments.h"
+#include "compute_peridem_grain.h"
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
@@ -114,6 +117,9 @@ void for_each_style(StyleSink &sink)
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
+  sink.compute("peridem/fragments", &compute_creator<ComputePeridemFragments>);
+  sink.compute("peridem/grain", &compute_creator<ComputePeridemGrain>);
+  sink.compute("peridem/bed", &compute_creator<ComputePeridemBed>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
   sink.command("create_peridem_bed", &command_creator<CreatePeridemBed>);

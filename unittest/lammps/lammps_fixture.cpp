@@ -40,8 +40,14 @@ void LammpsTest::SetUp()
                  (std::string("peridem_") + info->test_suite_name() + "_" + info->name()))
                     .string() +
                 "/";
-  std::filesystem::remove_all(scratch_dir);
-  std::filesystem::create_directories(scratch_dir);
+  // one rank makes the directory: on several ranks remove_all races
+  int me = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  if (me == 0) {
+    std::filesystem::remove_all(scratch_dir);
+    std::filesystem::create_directories(scratch_dir);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
   lmp = make_lammps();
 }
 
