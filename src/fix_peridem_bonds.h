@@ -53,6 +53,8 @@ class FixPeridemBonds : public Fix {
   int pack_reverse_comm_size(int, int) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
   // the bond between local or ghost atoms i1, i2 broke with damage term z;
@@ -63,6 +65,14 @@ class FixPeridemBonds : public Fix {
   const double *broken_count() const { return nbroken; }
   const double *broken_z() const { return zbroken; }
 
+  // state-based bonds (bond_style peridem/lps): the weighted volume m of each node in the
+  // reference configuration, kept through migration and restarts; < 0 until computed
+  double *weighted_volume() { return wvolume; }
+  // add the ghost entries of a per-atom array into their owners (newton_bond on)
+  void reverse_sum(double *a);
+  // copy two per-atom arrays from the owners to their ghosts
+  void forward(double *a, double *b);
+
  private:
   double *nbroken, *zbroken;
   bigint broken_here; // bonds broken on this rank since the last post_force
@@ -71,6 +81,8 @@ class FixPeridemBonds : public Fix {
   // leave the special lists there
   std::unordered_map<int, std::vector<tagint>> lost_partners;
   int comm_mode; // which reverse communication is under way
+  double *wvolume;
+  double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()
 
   void forget_partner(int i, tagint partner);
 

@@ -14,7 +14,9 @@
 
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
+#include "bond_peridem_lps.h"
 #include "compute_peridem_damage.h"
+#include "compute_peridem_dilation.h"
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
@@ -109,10 +111,12 @@ void for_each_style(StyleSink &sink)
 {
   sink.atom("peridem", &atom_vec_creator<AtomVecPeridem>);
   sink.bond("peridem", &bond_creator<BondPeridem>);
+  sink.bond("peridem/lps", &bond_creator<BondPeridemLPS>);
   sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
+  sink.compute("peridem/dilation", &compute_creator<ComputePeridemDilation>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
 }
