@@ -37,9 +37,9 @@ const char *const COEFF = "bond_coeff";
 
 BondPeridem::BondPeridem(LAMMPS *lmp)
     : Bond(lmp), c(nullptr), s0(nullptr), horizon(nullptr), spacing(nullptr), conic(nullptr),
-      breakage(peridem::BreakageMode::Tension), break_flag(1), break_after_force(0),
-      volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr), cache_ncalls(-1),
-      cache_bondlist(nullptr)
+      breakable(nullptr), breakage(peridem::BreakageMode::Tension), break_flag(1),
+      break_after_force(0), volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr),
+      cache_ncalls(-1), cache_bondlist(nullptr)
 {
   writedata = 1;
 }
@@ -53,6 +53,7 @@ BondPeridem::~BondPeridem()
     memory->destroy(horizon);
     memory->destroy(spacing);
     memory->destroy(conic);
+    memory->destroy(breakable);
   }
 }
 
@@ -127,7 +128,8 @@ void BondPeridem::compute(int eflag, int vflag)
 
     // a bond that breaks now carries no force now, unless the user asked
     // for the order of LAMMPS's peri styles: force first, then break
-    const bool breaks = break_flag && peridem::bond_breaks(s, s0[type], breakage);
+    const bool breaks =
+        break_flag && breakable[type] && peridem::bond_breaks(s, s0[type], breakage);
     if (breaks && !break_after_force) {
       break_bond(n, i1, i2, r0, s0[type]);
       continue;
@@ -290,10 +292,12 @@ void BondPeridem::allocate()
   memory->create(horizon, np1, "bond:horizon");
   memory->create(spacing, np1, "bond:spacing");
   memory->create(conic, np1, "bond:conic");
+  memory->create(breakable, np1, "bond:breakable");
   for (int i = 0; i < np1; i++) {
     setflag[i] = 0;
     c[i] = s0[i] = horizon[i] = spacing[i] = 0.0;
     conic[i] = 0;
+    breakable[i] = 1;
   }
 }
 
@@ -304,6 +308,7 @@ void BondPeridem::set_type(int type, const TypeParams &p)
   horizon[type] = p.horizon;
   spacing[type] = p.spacing;
   conic[type] = p.micromodulus == peridem::Micromodulus::Conic;
+  breakable[type] = p.breakable;
   setflag[type] = 1;
 }
 
@@ -313,26 +318,18 @@ void BondPeridem::set_type(int type, const TypeParams &p)
    bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h]
 ------------------------------------------------------------------------- */
 
-void BondPeridem::coeff(int narg, char **arg)
+BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char *style)
 {
-  if (narg < 2) error->all(FLERR, "{}: {} needs a bond type and its parameters", COEFF, STYLE);
+  if (narg < 2) error->all(FLERR, "{}: {} needs a bond type and its parameters", COEFF, style);
   if (!allocated) allocate();
-  int ilo, ihi;
-  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-
-  const int dimension = domain->dimension;
-  double E = 0.0, K = 0.0, Gc = 0.0, cval = 0.0, s0val = 0.0, eps = 0.0, h = 0.0;
-  bool haveE = false, haveK = false, haveGc = false, haveC = false, haveS0 = false;
-  bool haveMaterial = false, haveMicro = false;
-  peridem::Micromodulus micro = peridem::Micromodulus::Constant;
-  peridem::Material material;
-  std::string origin;
+  CoeffArgs a;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, a.ilo, a.ihi, error);
 
   auto positive = [&](int iarg, const char *what) {
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, what);
     const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (!(v > 0.0))
-      error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, STYLE, arg[iarg + 1]);
+      error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, style, arg[iarg + 1]);
     return v;
   };
 
@@ -341,39 +338,72 @@ void BondPeridem::coeff(int narg, char **arg)
     if (key == "material") {
       if (iarg + 2 >= narg)
         error->all(FLERR, "{}: material needs a file name and a material name", COEFF);
-      material = PERIDEM::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
-      haveMaterial = true;
-      origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
+      a.material = PERIDEM::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
+      a.haveMaterial = true;
+      a.origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
       iarg += 3;
       continue;
     }
+    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, key);
     if (key == "micromodulus") {
-      if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword micromodulus needs a value", COEFF);
-      micro = PERIDEM::parse_micromodulus(lmp, COEFF, arg[iarg + 1]);
-      haveMicro = true;
+      a.micro = PERIDEM::parse_micromodulus(lmp, COEFF, arg[iarg + 1]);
+      a.haveMicro = true;
+    } else if (key == "influence") {
+      a.influence = arg[iarg + 1];
+      a.haveInfluence = true;
+    } else if (key == "break") {
+      a.breakable = PERIDEM::yes_no(lmp, COEFF, key, arg[iarg + 1]);
     } else if (key == "E") {
-      E = positive(iarg, "E (Young's modulus)");
-      haveE = true;
+      a.E = positive(iarg, "E (Young's modulus)");
+      a.haveE = true;
     } else if (key == "K") {
-      K = positive(iarg, "K (bulk modulus)");
-      haveK = true;
+      a.K = positive(iarg, "K (bulk modulus)");
+      a.haveK = true;
+    } else if (key == "G") {
+      a.G = positive(iarg, "G (shear modulus)");
+      a.haveG = true;
     } else if (key == "Gc") {
-      Gc = positive(iarg, "Gc (fracture energy)");
-      haveGc = true;
+      a.Gc = positive(iarg, "Gc (fracture energy)");
+      a.haveGc = true;
     } else if (key == "c") {
-      cval = positive(iarg, "c (spring constant)");
-      haveC = true;
+      a.cval = positive(iarg, "c (spring constant)");
+      a.haveC = true;
     } else if (key == "s0") {
-      s0val = positive(iarg, "s0 (critical stretch)");
-      haveS0 = true;
+      a.s0 = positive(iarg, "s0 (critical stretch)");
+      a.haveS0 = true;
     } else if (key == "horizon") {
-      eps = positive(iarg, "horizon");
+      a.eps = positive(iarg, "horizon");
     } else if (key == "spacing") {
-      h = positive(iarg, "spacing");
+      a.h = positive(iarg, "spacing");
     } else
-      error->all(FLERR, "{}: unknown keyword {} for {}", COEFF, key, STYLE);
+      error->all(FLERR, "{}: unknown keyword {} for {}", COEFF, key, style);
     iarg += 2;
   }
+  return a;
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N material FILE NAME [horizon eps] [micromodulus m] [spacing h] [break yes|no]
+   bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h] [break yes|no]
+   bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h] [break yes|no]
+------------------------------------------------------------------------- */
+
+void BondPeridem::coeff(int narg, char **arg)
+{
+  const CoeffArgs a = parse_coeff(narg, arg, STYLE);
+  const int dimension = domain->dimension;
+  if (a.haveG || a.haveInfluence)
+    error->all(FLERR,
+               "{}: {} is a state-based coefficient; {} is bond-based (use bond_style "
+               "peridem/lps for K and G)",
+               COEFF, a.haveG ? "G" : "influence", STYLE);
+  const double E = a.E, K = a.K, Gc = a.Gc, cval = a.cval, s0val = a.s0, eps = a.eps, h = a.h;
+  const bool haveE = a.haveE, haveK = a.haveK, haveGc = a.haveGc, haveC = a.haveC,
+             haveS0 = a.haveS0, haveMaterial = a.haveMaterial, haveMicro = a.haveMicro;
+  const peridem::Micromodulus micro = a.micro;
+  peridem::Material material = a.material;
+  std::string origin = a.origin;
+  const int ilo = a.ilo, ihi = a.ihi;
 
   const int nsources = int(haveMaterial) + int(haveE || haveK) + int(haveC || haveS0);
   if (nsources != 1)
@@ -424,13 +454,14 @@ void BondPeridem::coeff(int narg, char **arg)
     error->all(FLERR, "{}: {}", COEFF, e.what());
   }
   p.spacing = h;
+  p.breakable = a.breakable;
   for (int i = ilo; i <= ihi; i++) set_type(i, p);
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "{} type {}: c = {:.10g}, s0 = {:.10g}, horizon = {:.10g}, {} micromodulus, "
-                   "{}d ({})\n",
+                   "{}d ({}){}\n",
                    STYLE, arg[0], p.c, p.s0, p.horizon, PERIDEM::micromodulus_name(p.micromodulus),
-                   dimension, origin);
+                   dimension, origin, p.breakable ? "" : ", unbreakable");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -478,7 +509,7 @@ void BondPeridem::init_style()
   // 1.5 h (+ skin) saves a fifth of the ghost atoms.
   double max_s0 = 0.0;
   for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i]) max_s0 = std::max(max_s0, s0[i]);
+    if (setflag[i]) max_s0 = std::max(max_s0, breakable[i] ? s0[i] : 1.0);
   stretch_allowance = break_flag ? std::min(0.5, max_s0 + 0.05) : 0.5;
   // computed as Comm::get_comm_cutoff computes its estimate from
   // equilibrium_distance(), so that the two agree to the last bit
@@ -519,15 +550,21 @@ double BondPeridem::equilibrium_distance(int i)
 
 /* ---------------------------------------------------------------------- */
 
+// LAMMPS calls write/read_restart_settings() of a bond style only under
+// bond_style hybrid: without these calls the settings (volume_correction,
+// break_order, ...) were lost in a restart
 void BondPeridem::write_restart(FILE *fp)
 {
+  write_restart_settings(fp);
   const int n = atom->nbondtypes;
   for (double *a : {c, s0, horizon, spacing}) fwrite(&a[1], sizeof(double), n, fp);
   fwrite(&conic[1], sizeof(int), n, fp);
+  fwrite(&breakable[1], sizeof(int), n, fp);
 }
 
 void BondPeridem::read_restart(FILE *fp)
 {
+  read_restart_settings(fp);
   allocate();
   const int n = atom->nbondtypes;
   for (double *a : {c, s0, horizon, spacing}) {
@@ -536,6 +573,8 @@ void BondPeridem::read_restart(FILE *fp)
   }
   if (comm->me == 0) utils::sfread(FLERR, &conic[1], sizeof(int), n, fp, nullptr, error);
   MPI_Bcast(&conic[1], n, MPI_INT, 0, world);
+  if (comm->me == 0) utils::sfread(FLERR, &breakable[1], sizeof(int), n, fp, nullptr, error);
+  MPI_Bcast(&breakable[1], n, MPI_INT, 0, world);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
@@ -568,6 +607,7 @@ void BondPeridem::write_data(FILE *fp)
     std::string line = fmt::format("{} c {:.17g} s0 {:.17g} horizon {:.17g} micromodulus {}", i,
                                    c[i], s0[i], horizon[i], conic[i] ? "conic" : "constant");
     if (spacing[i] > 0.0) line += fmt::format(" spacing {:.17g}", spacing[i]);
+    if (!breakable[i]) line += " break no";
     fprintf(fp, "%s\n", line.c_str());
   }
 }

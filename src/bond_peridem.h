@@ -14,6 +14,7 @@ BondStyle(peridem,BondPeridem);
 
 #include "bond.h"
 #include "peridem_bond_law.h"
+#include "peridem_material.h"
 
 #include <string>
 #include <vector>
@@ -47,10 +48,25 @@ class BondPeridem : public Bond {
     double horizon = 0.0; // eps: bonds are no longer than this
     double spacing = 0.0; // node spacing h for the volume correction (0: not given)
     peridem::Micromodulus micromodulus = peridem::Micromodulus::Constant;
+    int breakable = 1; // 0: bonds of this type never break (bond_coeff ... break no)
   };
   // per bond type, index 1..nbondtypes (flat arrays for the force loop)
   double *c, *s0, *horizon, *spacing;
-  int *conic;
+  int *conic, *breakable;
+
+  // the keywords of one bond_coeff command, as given, for this style and peridem/lps
+  struct CoeffArgs {
+    int ilo = 0, ihi = 0;
+    double E = 0.0, K = 0.0, G = 0.0, Gc = 0.0, cval = 0.0, s0 = 0.0, eps = 0.0, h = 0.0;
+    bool haveE = false, haveK = false, haveG = false, haveGc = false, haveC = false, haveS0 = false,
+         haveMaterial = false, haveMicro = false, haveInfluence = false;
+    peridem::Micromodulus micro = peridem::Micromodulus::Constant;
+    std::string influence;
+    peridem::Material material;
+    std::string origin;
+    int breakable = 1;
+  };
+  CoeffArgs parse_coeff(int narg, char **arg, const char *style);
 
   peridem::BreakageMode breakage;
   int break_flag;                 // 0: bonds never break

@@ -23,14 +23,14 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-enum { COUNTS, PARTNERS };
+enum { COUNTS, PARTNERS, SUM };
 }
 
 /* ---------------------------------------------------------------------- */
 
 FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0),
-      escapes_deleted(0)
+      escapes_deleted(0), wvolume(nullptr), comm_a(nullptr), comm_b(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
   // one instance, the bond style's: a second one would count nothing
@@ -47,10 +47,13 @@ FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
   // next_reneighbor names a step only after a break (collect()).
   force_reneighbor = 1;
   next_reneighbor = -1;
+  comm_forward = 2;
+  maxexchange = 3;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nmax; i++) nbroken[i] = zbroken[i] = 0.0;
+  for (int i = 0; i < atom->nmax; i++) wvolume[i] = -1.0;
   adopt_data_file_damage();
 }
 
@@ -60,6 +63,7 @@ FixPeridemBonds::~FixPeridemBonds()
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(nbroken);
   memory->destroy(zbroken);
+  memory->destroy(wvolume);
 }
 
 int FixPeridemBonds::setmask()
@@ -258,6 +262,10 @@ int FixPeridemBonds::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++) {
+    if (comm_mode == SUM) {
+      buf[m++] = comm_a[i];
+      continue;
+    }
     if (comm_mode == COUNTS) {
       buf[m++] = nbroken[i];
       buf[m++] = zbroken[i];
@@ -280,6 +288,10 @@ void FixPeridemBonds::unpack_reverse_comm(int n, int *list, double *buf)
   int m = 0;
   for (int k = 0; k < n; k++) {
     const int j = list[k];
+    if (comm_mode == SUM) {
+      comm_a[j] += buf[m++];
+      continue;
+    }
     if (comm_mode == COUNTS) {
       nbroken[j] += buf[m++];
       zbroken[j] = std::max(zbroken[j], buf[m++]);
@@ -296,39 +308,45 @@ void FixPeridemBonds::grow_arrays(int nmax)
 {
   memory->grow(nbroken, nmax, "peridem/bonds:nbroken");
   memory->grow(zbroken, nmax, "peridem/bonds:zbroken");
+  memory->grow(wvolume, nmax, "peridem/bonds:wvolume");
 }
 
 void FixPeridemBonds::set_arrays(int i)
 {
   nbroken[i] = zbroken[i] = 0.0;
+  wvolume[i] = -1.0;
 }
 
 void FixPeridemBonds::copy_arrays(int i, int j, int)
 {
   nbroken[j] = nbroken[i];
   zbroken[j] = zbroken[i];
+  wvolume[j] = wvolume[i];
 }
 
 int FixPeridemBonds::pack_exchange(int i, double *buf)
 {
   buf[0] = nbroken[i];
   buf[1] = zbroken[i];
-  return 2;
+  buf[2] = wvolume[i];
+  return 3;
 }
 
 int FixPeridemBonds::unpack_exchange(int nlocal, double *buf)
 {
   nbroken[nlocal] = buf[0];
   zbroken[nlocal] = buf[1];
-  return 2;
+  wvolume[nlocal] = buf[2];
+  return 3;
 }
 
 int FixPeridemBonds::pack_restart(int i, double *buf)
 {
-  buf[0] = 3;
+  buf[0] = 4;
   buf[1] = nbroken[i];
   buf[2] = zbroken[i];
-  return 3;
+  buf[3] = wvolume[i];
+  return 4;
 }
 
 void FixPeridemBonds::unpack_restart(int nlocal, int nth)
@@ -338,21 +356,60 @@ void FixPeridemBonds::unpack_restart(int nlocal, int nth)
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   nbroken[nlocal] = extra[nlocal][m + 1];
   zbroken[nlocal] = extra[nlocal][m + 2];
+  wvolume[nlocal] = extra[nlocal][m + 3];
 }
 
 int FixPeridemBonds::size_restart(int)
 {
-  return 3;
+  return 4;
 }
 
 int FixPeridemBonds::maxsize_restart()
 {
-  return 3;
+  return 4;
 }
 
 double FixPeridemBonds::memory_usage()
 {
-  return 2.0 * atom->nmax * sizeof(double);
+  return 3.0 * atom->nmax * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom sums of bond_style peridem/lps: ghost shares home (newton_bond
+   on), then the owners' values out to the ghosts
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::reverse_sum(double *a)
+{
+  comm_mode = SUM;
+  comm_a = a;
+  comm->reverse_comm_fix(this, 1);
+}
+
+void FixPeridemBonds::forward(double *a, double *b)
+{
+  comm_a = a;
+  comm_b = b;
+  comm->forward_comm_fix(this, 2);
+}
+
+int FixPeridemBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    buf[m++] = comm_a[list[k]];
+    buf[m++] = comm_b[list[k]];
+  }
+  return m;
+}
+
+void FixPeridemBonds::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    comm_a[i] = buf[m++];
+    comm_b[i] = buf[m++];
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -55,6 +55,8 @@ class FixPeridemBonds : public Fix {
   int pack_reverse_comm_size(int, int) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
   // write_data: a PeridemDamage section (ID, broken count, Z) when any node
@@ -76,6 +78,13 @@ class FixPeridemBonds : public Fix {
   // owned atom i lost an intact bond partner that was deleted (escaped
   // node, fix peridem/wall lost delete): the bond counts as broken
   void partner_deleted(int i) { nbroken[i] += 1.0; }
+  // state-based bonds (bond_style peridem/lps): the weighted volume m of each node in the
+  // reference configuration, kept through migration and restarts; < 0 until computed
+  double *weighted_volume() { return wvolume; }
+  // add the ghost entries of a per-atom array into their owners (newton_bond on)
+  void reverse_sum(double *a);
+  // copy two per-atom arrays from the owners to their ghosts
+  void forward(double *a, double *b);
 
  private:
   double *nbroken, *zbroken;
@@ -84,8 +93,10 @@ class FixPeridemBonds : public Fix {
   // indices lost this step; they travel home by reverse communication and
   // leave the special lists there
   std::unordered_map<int, std::vector<tagint>> lost_partners;
-  int comm_mode;       // which reverse communication is under way
-  int escapes_deleted; // a fix peridem/wall deletes nodes leaving the box
+  int comm_mode;           // which reverse communication is under way
+  int escapes_deleted;     // a fix peridem/wall deletes nodes leaving the box
+  double *wvolume;         // LPS weighted volume m (reference), < 0 until computed
+  double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()
 
   void forget_partner(int i, tagint partner);
   void adopt_data_file_damage();

@@ -14,11 +14,13 @@
 
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
+#include "bond_peridem_lps.h"
 #include "compute_peridem_bed.h"
 #include "compute_peridem_damage.h"
-#include "create_peridem_bed.h"
+#include "compute_peridem_dilation.h"
 #include "compute_peridem_fragments.h"
 #include "compute_peridem_grain.h"
+#include "create_peridem_bed.h"
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
@@ -113,6 +115,7 @@ void for_each_style(StyleSink &sink)
 {
   sink.atom("peridem", &atom_vec_creator<AtomVecPeridem>);
   sink.bond("peridem", &bond_creator<BondPeridem>);
+  sink.bond("peridem/lps", &bond_creator<BondPeridemLPS>);
   sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
@@ -120,6 +123,7 @@ void for_each_style(StyleSink &sink)
   sink.compute("peridem/fragments", &compute_creator<ComputePeridemFragments>);
   sink.compute("peridem/grain", &compute_creator<ComputePeridemGrain>);
   sink.compute("peridem/bed", &compute_creator<ComputePeridemBed>);
+  sink.compute("peridem/dilation", &compute_creator<ComputePeridemDilation>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
   sink.command("create_peridem_bed", &command_creator<CreatePeridemBed>);

@@ -1,0 +1,483 @@
+/* ----------------------------------------------------------------------
+   PERIDEM: bond_style peridem/lps, the linear peridynamic solid of
+   Jha, Desai, Bhattacharya & Lipton (PeriDEM, eq. 5-10, 33-34) on LAMMPS's
+   bond list. The physics is in peridem_lps_law.h; coefficient parsing,
+   the bond cache's refresh rule, the ghost cutoff, validation and the one
+   breakage path (fix peridem/bonds) are bond_style peridem's.
+
+   Per step: (1) dilation pass over the bonds: extension of each bond,
+   breakage (unless break_order after_force), sum_j omega beta r e V_j into
+   both nodes; (2) the ghosts' shares go home (newton_bond on), each local
+   node forms theta/m and 1/m, and both go out to the ghosts; (3) force pass
+   over the bonds with the lengths of pass (1).
+------------------------------------------------------------------------- */
+
+#include "bond_peridem_lps.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_peridem_bonds.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include "lmp_peridem_parse.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *const STYLE = "bond_style peridem/lps";
+const char *const COEFF = "bond_coeff";
+const char *const INFLUENCE[] = {"conic", "constant", "inverse"};
+const char *const PLANE[] = {"strain", "stress", "3d"};
+} // namespace
+
+/* ---------------------------------------------------------------------- */
+
+BondPeridemLPS::BondPeridemLPS(LAMMPS *lmp)
+    : BondPeridem(lmp), bulk(nullptr), shear(nullptr), influence(nullptr),
+      plane(peridem::LpsPlane::PlaneStrain), dfac(3.0), sum(nullptr), theta_over_m(nullptr),
+      inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1)
+{
+}
+
+BondPeridemLPS::~BondPeridemLPS()
+{
+  memory->destroy(bulk);
+  memory->destroy(shear);
+  memory->destroy(influence);
+  memory->destroy(sum);
+  memory->destroy(theta_over_m);
+  memory->destroy(inv_m);
+  memory->destroy(theta);
+}
+
+void BondPeridemLPS::allocate_lps()
+{
+  if (!allocated) allocate();
+  if (bulk) return;
+  const int np1 = atom->nbondtypes + 1;
+  memory->create(bulk, np1, "bond:bulk");
+  memory->create(shear, np1, "bond:shear");
+  memory->create(influence, np1, "bond:influence");
+  for (int i = 0; i < np1; i++) {
+    bulk[i] = shear[i] = 0.0;
+    influence[i] = 0;
+  }
+}
+
+void BondPeridemLPS::grow_lps()
+{
+  if (atom->nmax <= nmax_lps) return;
+  nmax_lps = atom->nmax;
+  memory->destroy(sum);
+  memory->destroy(theta_over_m);
+  memory->destroy(inv_m);
+  memory->destroy(theta);
+  memory->create(sum, nmax_lps, "bond:sum");
+  memory->create(theta_over_m, nmax_lps, "bond:theta_over_m");
+  memory->create(inv_m, nmax_lps, "bond:inv_m");
+  memory->create(theta, nmax_lps, "bond:theta");
+}
+
+/* ----------------------------------------------------------------------
+   per entry of the bond list: r0, omega beta V_i V_j and the weights of
+   the extension in the two dilations; refreshed as bond_style peridem's
+------------------------------------------------------------------------- */
+
+void BondPeridemLPS::fill_lps_cache()
+{
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const double *vfrac = atom->vfrac;
+  lcache.resize(nbondlist);
+  current_length.resize(nbondlist);
+  for (int n = 0; n < nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    const double r0 = reference_length(i1, i2);
+    const double w =
+        peridem::influence_value(peridem::Influence(influence[type]), r0, horizon[type]);
+    const double beta = volume_correction
+                            ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM, r0,
+                                                     horizon[type], spacing[type])
+                            : 1.0;
+    lcache[n] = {r0, w * beta * vfrac[i1] * vfrac[i2], w * beta * r0 * vfrac[i2],
+                 w * beta * r0 * vfrac[i1]};
+  }
+  cache_ncalls = neighbor->ncalls;
+  cache_bondlist = bondlist;
+}
+
+/* ----------------------------------------------------------------------
+   m_i = sum_j omega beta r^2 V_j over the intact bonds ([JDBL] eq. 8), in
+   the reference configuration, once per node: kept by fix peridem/bonds
+   through migration and restarts, so that later breakage lowers theta but
+   not m (as LAMMPS peri/lps's wvolume). A node without bonds (m = 0) is
+   looked at again at the next run.
+------------------------------------------------------------------------- */
+
+void BondPeridemLPS::compute_weighted_volume()
+{
+  check_wvolume = 0;
+  double *m = bonds_fix->weighted_volume();
+  const int nlocal = atom->nlocal;
+  int pending = 0;
+  for (int i = 0; i < nlocal; i++)
+    if (!(m[i] > 0.0)) pending = 1;
+  int any = 0;
+  MPI_Allreduce(&pending, &any, 1, MPI_INT, MPI_MAX, world);
+  if (!any) return;
+
+  const int nall = nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) sum[i] = 0.0;
+  int **bondlist = neighbor->bondlist;
+  const int newton_bond = force->newton_bond;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    if (bondlist[n][2] <= 0) continue;
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    sum[i1] += lcache[n].wi * lcache[n].r0;
+    if (newton_bond || i2 < nlocal) sum[i2] += lcache[n].wj * lcache[n].r0;
+  }
+  if (newton_bond) bonds_fix->reverse_sum(sum);
+  for (int i = 0; i < nlocal; i++)
+    if (!(m[i] > 0.0)) m[i] = sum[i];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondPeridemLPS::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  if (validate_next) validate_bonds();
+  if (neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(lcache.size()) ||
+      neighbor->bondlist != cache_bondlist)
+    fill_lps_cache();
+  grow_lps();
+  if (check_wvolume) compute_weighted_volume();
+
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  const int newton_bond = force->newton_bond;
+  const double *x = atom->x[0];
+  double *f = atom->f[0];
+  const LpsCache *bc = lcache.data();
+  double *len = current_length.data();
+
+  // (1) dilation pass; the sum on i1 stays in a register while i1 repeats
+  for (int i = 0; i < nall; i++) sum[i] = 0.0;
+  {
+    int current = -1;
+    double acc = 0.0;
+    for (int n = 0; n < nbondlist; n++) {
+      const int type = bondlist[n][2];
+      if (type <= 0) continue;
+      const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+      const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+      const double delx = x1[0] - x2[0], dely = x1[1] - x2[1], delz = x1[2] - x2[2];
+      const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
+      const double e = r - bc[n].r0;
+      // a bond that breaks now takes no part in this step (default order)
+      if (!break_after_force && break_flag && breakable[type] &&
+          peridem::bond_breaks(e / bc[n].r0, s0[type], breakage)) {
+        break_bond(n, i1, i2, bc[n].r0, s0[type]);
+        continue;
+      }
+      len[n] = r;
+      if (i1 != current) {
+        if (current >= 0) sum[current] += acc;
+        current = i1;
+        acc = 0.0;
+      }
+      acc += bc[n].wi * e;
+      if (newton_bond || i2 < nlocal) sum[i2] += bc[n].wj * e;
+    }
+    if (current >= 0) sum[current] += acc;
+  }
+
+  // (2) theta_i = (d/m_i) sum ([JDBL] eq. 34), complete on owners and ghosts
+  if (newton_bond) bonds_fix->reverse_sum(sum);
+  const double *m = bonds_fix->weighted_volume();
+  for (int i = 0; i < nlocal; i++) {
+    if (m[i] > 0.0) {
+      inv_m[i] = 1.0 / m[i];
+      theta[i] = dfac * sum[i] * inv_m[i];
+      theta_over_m[i] = theta[i] * inv_m[i];
+    } else
+      inv_m[i] = theta[i] = theta_over_m[i] = 0.0;
+  }
+  bonds_fix->forward(theta_over_m, inv_m);
+
+  // volumetric energy density needs theta on ghosts too: theta = (theta/m)/(1/m)
+  auto theta_of = [&](int i) {
+    return i < nlocal ? theta[i] : (inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0);
+  };
+
+  // (3) force pass
+  const peridem::LpsConstants *lc = constants.data();
+  int current = -1;
+  double fsum[3] = {0.0, 0.0, 0.0};
+  auto flush = [&]() {
+    if (current < 0) return;
+    double *fc = f + 3 * current;
+    fc[0] += fsum[0];
+    fc[1] += fsum[1];
+    fc[2] += fsum[2];
+    fsum[0] = fsum[1] = fsum[2] = 0.0;
+  };
+  double ebond = 0.0;
+  for (int n = 0; n < nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+    const double delx = x1[0] - x2[0], dely = x1[1] - x2[1], delz = x1[2] - x2[2];
+    const double r = len[n];
+    const double e = r - bc[n].r0;
+    const double F = peridem::lps_bond_force(lc[type], bc[n].k, bc[n].r0, e, theta_over_m[i1],
+                                             theta_over_m[i2], inv_m[i1], inv_m[i2]);
+    // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
+    const double fbond = r > 0.0 ? -F / r : 0.0;
+    if (i1 != current) {
+      flush();
+      current = i1;
+    }
+    fsum[0] += delx * fbond;
+    fsum[1] += dely * fbond;
+    fsum[2] += delz * fbond;
+    if (newton_bond || i2 < nlocal) {
+      double *f2 = f + 3 * i2;
+      f2[0] -= delx * fbond;
+      f2[1] -= dely * fbond;
+      f2[2] -= delz * fbond;
+    }
+    if (evflag) {
+      if (eflag)
+        ebond = peridem::lps_bond_energy(lc[type], bc[n].k, bc[n].r0, e, theta_of(i1), theta_of(i2),
+                                         inv_m[i1], inv_m[i2]);
+      ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+    }
+    if (break_after_force && break_flag && breakable[type] &&
+        peridem::bond_breaks(e / bc[n].r0, s0[type], breakage))
+      break_bond(n, i1, i2, bc[n].r0, s0[type]);
+  }
+  flush();
+}
+
+/* ----------------------------------------------------------------------
+   bond_style peridem/lps [plane strain|stress|3d] and bond_style peridem's
+   keywords
+------------------------------------------------------------------------- */
+
+void BondPeridemLPS::settings(int narg, char **arg)
+{
+  std::vector<char *> rest;
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "plane") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword plane needs a value", STYLE);
+      plane = peridem::LpsPlane(
+          PERIDEM::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
+      continue;
+    }
+    rest.push_back(arg[iarg]);
+    if (iarg + 1 < narg) rest.push_back(arg[iarg + 1]);
+  }
+  BondPeridem::settings(int(rest.size()), rest.data());
+}
+
+/* ----------------------------------------------------------------------
+   bond_coeff N K value G value (Gc value | s0 value) horizon eps
+              [influence conic|constant|inverse] [spacing h] [break yes|no]
+   bond_coeff N material FILE NAME [horizon eps] [influence w] [spacing h] [break yes|no]
+------------------------------------------------------------------------- */
+
+void BondPeridemLPS::coeff(int narg, char **arg)
+{
+  CoeffArgs a = parse_coeff(narg, arg, STYLE);
+  allocate_lps();
+  if (a.haveC || a.haveE || a.haveMicro)
+    error->all(FLERR,
+               "{}: {} is a bond-based coefficient; {} is state-based and takes K, G, Gc or s0, "
+               "horizon and influence (use bond_style peridem for {})",
+               COEFF, a.haveC ? "c" : (a.haveE ? "E" : "micromodulus"), STYLE,
+               a.haveC ? "c" : (a.haveE ? "E" : "micromodulus"));
+  if (a.haveMaterial && (a.haveK || a.haveG || a.haveGc || a.haveS0))
+    error->all(FLERR, "{}: {} takes material FILE NAME or K, G and Gc (or s0), not both", COEFF,
+               STYLE);
+
+  double K = a.K, G = a.G, s0val = 0.0, eps = a.eps;
+  int infl = 0; // the paper's 1 - r/eps
+  if (a.haveMaterial) {
+    const peridem::Material &mat = a.material;
+    K = mat.elastic.K;
+    G = mat.elastic.G;
+    if (!(K > 0.0) || !(G > 0.0))
+      error->all(FLERR, "{}: {} needs K and G (or any two of E, nu, K, G); {} has not both", COEFF,
+                 STYLE, a.origin);
+    if (!(eps > 0.0)) eps = mat.horizon;
+    if (!(eps > 0.0))
+      error->all(FLERR, "{}: {} has no horizon: add horizon to the file or the command", COEFF,
+                 a.origin);
+    if (!(mat.G_c > 0.0)) error->all(FLERR, "{}: {} has no Gc", COEFF, a.origin);
+    infl = mat.micromodulus == peridem::Micromodulus::Conic ? 0 : 1;
+    a.Gc = mat.G_c;
+    a.haveGc = true;
+  } else {
+    if (!a.haveK) error->all(FLERR, "{}: {} needs K (bulk modulus)", COEFF, STYLE);
+    if (!a.haveG) error->all(FLERR, "{}: {} needs G (shear modulus)", COEFF, STYLE);
+    if (!(eps > 0.0)) error->all(FLERR, "{}: {} needs a horizon", COEFF, STYLE);
+    if (a.haveGc == a.haveS0)
+      error->all(FLERR, "{}: {} needs Gc (fracture energy, PeriDEM eq. 10) or s0, one of them",
+                 COEFF, STYLE);
+  }
+  if (a.haveInfluence)
+    infl = PERIDEM::choice(lmp, COEFF, "influence", a.influence,
+                           {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
+  try {
+    // [JDBL] eq. 10 (Zhu & Zhao's 3D LPS value; used in 2D too, as the paper does)
+    s0val = a.haveGc ? peridem::lps_critical_stretch(K, G, a.Gc, eps) : a.s0;
+    peridem::lps_constants(domain->dimension, plane, K, G); // validates K, G
+  } catch (peridem::ParameterError &e) {
+    error->all(FLERR, "{}: {}", COEFF, e.what());
+  }
+  for (int i = a.ilo; i <= a.ihi; i++) {
+    TypeParams p;
+    p.s0 = s0val;
+    p.horizon = eps;
+    p.spacing = a.h;
+    p.breakable = a.breakable;
+    set_type(i, p);
+    bulk[i] = K;
+    shear[i] = G;
+    influence[i] = infl;
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "{} type {}: K = {:.10g}, G = {:.10g}, s0 = {:.10g}{}, horizon = {:.10g}, "
+                   "influence {}{}\n",
+                   STYLE, arg[0], K, G, s0val, a.haveGc ? " (PeriDEM eq. 10)" : "", eps,
+                   INFLUENCE[infl], a.breakable ? "" : ", unbreakable");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondPeridemLPS::init_style()
+{
+  BondPeridem::init_style();
+  const int dimension = domain->dimension;
+  constants.assign(atom->nbondtypes + 1, peridem::LpsConstants());
+  for (int i = 1; i <= atom->nbondtypes; i++) {
+    if (!setflag[i]) continue;
+    constants[i] = peridem::lps_constants(dimension, plane, bulk[i], shear[i]);
+  }
+  dfac = (dimension == 3 || plane == peridem::LpsPlane::ThreeD) ? 3.0 : 2.0;
+  check_wvolume = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void BondPeridemLPS::write_restart(FILE *fp)
+{
+  write_restart_settings(fp); // see BondPeridem::write_restart
+  const int n = atom->nbondtypes;
+  for (double *arr : {bulk, shear, s0, horizon, spacing}) fwrite(&arr[1], sizeof(double), n, fp);
+  fwrite(&influence[1], sizeof(int), n, fp);
+  fwrite(&breakable[1], sizeof(int), n, fp);
+}
+
+void BondPeridemLPS::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate_lps();
+  const int n = atom->nbondtypes;
+  for (double *arr : {bulk, shear, s0, horizon, spacing}) {
+    if (comm->me == 0) utils::sfread(FLERR, &arr[1], sizeof(double), n, fp, nullptr, error);
+    MPI_Bcast(&arr[1], n, MPI_DOUBLE, 0, world);
+  }
+  for (int *arr : {influence, breakable}) {
+    if (comm->me == 0) utils::sfread(FLERR, &arr[1], sizeof(int), n, fp, nullptr, error);
+    MPI_Bcast(&arr[1], n, MPI_INT, 0, world);
+  }
+  for (int i = 1; i <= n; i++) setflag[i] = 1;
+}
+
+void BondPeridemLPS::write_restart_settings(FILE *fp)
+{
+  BondPeridem::write_restart_settings(fp);
+  const int p = int(plane);
+  fwrite(&p, sizeof(int), 1, fp);
+}
+
+void BondPeridemLPS::read_restart_settings(FILE *fp)
+{
+  BondPeridem::read_restart_settings(fp);
+  int p = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &p, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&p, 1, MPI_INT, 0, world);
+  plane = peridem::LpsPlane(p);
+}
+
+void BondPeridemLPS::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++) {
+    std::string line =
+        fmt::format("{} K {:.17g} G {:.17g} s0 {:.17g} horizon {:.17g} influence {}", i, bulk[i],
+                    shear[i], s0[i], horizon[i], INFLUENCE[influence[i]]);
+    if (spacing[i] > 0.0) line += fmt::format(" spacing {:.17g}", spacing[i]);
+    if (!breakable[i]) line += " break no";
+    fprintf(fp, "%s\n", line.c_str());
+  }
+}
+
+/* ----------------------------------------------------------------------
+   force of one bond from the nodes' theta/m and 1/m of the last force
+   computation (compute bond/local); the energy of a state-based bond is
+   not its own, so single() returns the bond's share as compute() tallies it
+------------------------------------------------------------------------- */
+
+double BondPeridemLPS::single(int type, double rsq, int i, int j, double &fforce)
+{
+  fforce = 0.0;
+  if (type <= 0 || !inv_m || std::max(i, j) >= nmax_lps || constants.empty()) return 0.0;
+  const double r0 = reference_length(i, j);
+  const double w = peridem::influence_value(peridem::Influence(influence[type]), r0, horizon[type]);
+  const double beta = volume_correction ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM,
+                                                                 r0, horizon[type], spacing[type])
+                                        : 1.0;
+  const double k = w * beta * atom->vfrac[i] * atom->vfrac[j];
+  const double r = std::sqrt(rsq);
+  const double e = r - r0;
+  const double F = peridem::lps_bond_force(constants[type], k, r0, e, theta_over_m[i],
+                                           theta_over_m[j], inv_m[i], inv_m[j]);
+  fforce = r > 0.0 ? -F / r : 0.0;
+  const double ti = inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0;
+  const double tj = inv_m[j] > 0.0 ? theta_over_m[j] / inv_m[j] : 0.0;
+  return peridem::lps_bond_energy(constants[type], k, r0, e, ti, tj, inv_m[i], inv_m[j]);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *BondPeridemLPS::extract(const char *str, int &dim)
+{
+  dim = 1;
+  if (strcmp(str, "K") == 0) return (void *)bulk;
+  if (strcmp(str, "G") == 0) return (void *)shear;
+  if (strcmp(str, "s0") == 0) return (void *)s0;
+  if (strcmp(str, "horizon") == 0) return (void *)horizon;
+  dim = 0;
+  return nullptr;
+}
+
+double BondPeridemLPS::memory_usage()
+{
+  return Bond::memory_usage() + lcache.capacity() * sizeof(LpsCache) +
+         current_length.capacity() * sizeof(double) + 4.0 * nmax_lps * sizeof(double);
+}

@@ -1,0 +1,72 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM: bond_style peridem/lps, state-based peridynamics (the linear
+   peridynamic solid) with breakage. See doc/bond_peridem_lps.rst.
+------------------------------------------------------------------------- */
+
+#ifdef BOND_CLASS
+// clang-format off
+BondStyle(peridem/lps,BondPeridemLPS);
+// clang-format on
+#else
+
+#ifndef LMP_BOND_PERIDEM_LPS_H
+#define LMP_BOND_PERIDEM_LPS_H
+
+#include "bond_peridem.h"
+#include "peridem_lps_law.h"
+
+namespace LAMMPS_NS {
+
+class BondPeridemLPS : public BondPeridem {
+ public:
+  BondPeridemLPS(class LAMMPS *);
+  ~BondPeridemLPS() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  double single(int, double, int, int, double &) override;
+  void *extract(const char *, int &) override;
+  double memory_usage() override;
+
+  // dilation theta of local atoms after the last force computation (0 without bonds)
+  const double *dilation() const { return theta; }
+
+ protected:
+  // per bond type, 1..nbondtypes (s0, horizon, spacing, breakable: the base class's arrays)
+  double *bulk, *shear;
+  int *influence;
+  std::vector<peridem::LpsConstants> constants;
+  peridem::LpsPlane plane;
+  double dfac; // d of theta = (d/m) sum omega beta r e V
+
+  struct LpsCache {
+    double r0; // reference length
+    double k;  // omega beta V_i V_j
+    double wi; // omega beta r0 V_j: weight of the extension in theta_i
+    double wj; // omega beta r0 V_i
+  };
+  std::vector<LpsCache> lcache;
+  std::vector<double> current_length; // |y| of each bond, from the dilation pass
+  void fill_lps_cache();
+
+  // per atom (nmax): sum of the dilation pass, theta/m, 1/m, theta
+  double *sum, *theta_over_m, *inv_m, *theta;
+  int nmax_lps;
+  int check_wvolume; // see whether some node still needs its weighted volume
+  void grow_lps();
+  void compute_weighted_volume();
+
+  void allocate_lps();
+};
+
+} // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,165 @@
+// bond_style peridem/lps against LAMMPS's own pair_style peri/lps on the same
+// nodes with the same constants (K, G, s0 with alpha = 0, horizon, influence
+// 1/r, the linear partial-volume ramp). peri/lps works with force, energy
+// and mass densities: its force and energy equal ours divided by the node
+// volume (all volumes equal here), and the trajectories are the same.
+
+#include "lammps_fixture.h"
+
+#include "atom.h"
+#include "bond_peridem_lps.h"
+#include "force.h"
+#include "lammps.h"
+#include "library.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+constexpr double VOLUME = 1.25e-10, DENSITY = 2200.0;
+
+struct NodeState {
+  std::array<double, 3> x, f;
+};
+
+std::map<tagint, NodeState> nodes(LAMMPS *lmp)
+{
+  std::map<tagint, NodeState> out;
+  Atom *atom = lmp->atom;
+  for (int i = 0; i < atom->nlocal; i++)
+    out[atom->tag[i]] = {{atom->x[i][0], atom->x[i][1], atom->x[i][2]},
+                         {atom->f[i][0], atom->f[i][1], atom->f[i][2]}};
+  return out;
+}
+
+// the target of LAMMPS's examples/peri/in.peri.lps (or a cube), either style;
+// K and G differ (the example has K = G) so that both terms are checked
+std::string setup(bool stock, const std::string &region)
+{
+  std::string s = fmt::format("units si\nboundary s s s\natom_style {}\natom_modify map array\n"
+                              "neighbor 0.0010 bin\nlattice sc 0.0005\n{}\n",
+                              stock ? "peri" : "peridem", region);
+  if (stock)
+    return s + "create_box 1 target\ncreate_atoms 1 region target\n"
+               "pair_style peri/lps\npair_coeff * * 14.9e9 8.1e9 0.0015001 0.0005 0.0\n"
+               "set group all density 2200\nset group all volume 1.25e-10\n";
+  return s + fmt::format("create_box 1 target bond/types 1 extra/bond/per/atom 70 "
+                         "extra/special/per/atom 140\ncreate_atoms 1 region target\n"
+                         "set type 1 mol 1\nset group all volume {}\nset group all mass {}\n"
+                         "pair_style zero 0.0016\npair_coeff * *\n"
+                         "special_bonds lj/coul 0.0 1.0 1.0\n"
+                         "bond_style peridem/lps volume_correction linear break_order after_force\n"
+                         "bond_coeff 1 K 14.9e9 G 8.1e9 s0 0.0005 horizon 0.0015001 "
+                         "influence inverse\n"
+                         "create_bonds many all all 1 0.0 0.0015001\npair_style none\n",
+                         VOLUME, DENSITY * VOLUME);
+}
+
+} // namespace
+
+class BondPeridemLPSVsPeriLPS : public ::testing::Test {
+ protected:
+  void TearDown() override
+  {
+    delete stock;
+    delete ours;
+  }
+  LAMMPS *stock = nullptr, *ours = nullptr;
+};
+
+TEST_F(BondPeridemLPSVsPeriLPS, ForcesAndEnergyOfADeformedBlockAgree)
+{
+  const std::string cube = "region target block -0.003 0.003 -0.003 0.003 -0.003 0.003 units box";
+  // peri/lps takes its reference from the positions at its first run
+  const std::string deform = "displace_atoms all random 1e-7 1e-7 1e-7 87287 units box\n"
+                             "thermo_style custom step pe\nrun 0";
+  stock = make_lammps();
+  lammps_commands_string(stock, (setup(true, cube) + "run 0\n" + deform).c_str());
+  ours = make_lammps();
+  lammps_commands_string(ours, (setup(false, cube) + deform).c_str());
+
+  const auto a = nodes(stock), b = nodes(ours);
+  ASSERT_EQ(a.size(), 2197u);
+  ASSERT_EQ(a.size(), b.size());
+  double worst = 0.0, fmax = 0.0;
+  for (const auto &[tag, s] : a) {
+    const NodeState &t = b.at(tag);
+    for (int d = 0; d < 3; d++) ASSERT_EQ(s.x[d], t.x[d]);
+    double diff = 0.0, norm = 0.0;
+    for (int d = 0; d < 3; d++) {
+      diff += std::pow(s.f[d] - t.f[d] / VOLUME, 2);
+      norm += s.f[d] * s.f[d];
+    }
+    fmax = std::max(fmax, std::sqrt(norm));
+    worst = std::max(worst, std::sqrt(diff / norm));
+  }
+  std::printf("  largest per-atom relative force difference: %.2e (max |f| %.3e)\n", worst, fmax);
+  EXPECT_GT(fmax, 1e9); // the block is really deformed
+  EXPECT_LT(worst, 1e-10);
+
+  // Energy density: peri/lps tallies K theta^2/2 per node and, per ordered
+  // pair, ev_tally(i, i, ..., 0.5 * evdwl) with newton off, i.e. half of
+  // 15G/(2m) omega (e^d)^2 V_j: its deviatoric energy is half of W's
+  // ([JDBL] eq. 8; ours is checked against the forces by finite
+  // differences in test_bond_peridem_lps). With the volumetric part from
+  // our dilations, ours = vol + 2 (stock - vol).
+  const double pe_stock = lammps_get_thermo(stock, "pe");
+  const double pe_ours = lammps_get_thermo(ours, "pe") / VOLUME;
+  const double *theta = dynamic_cast<BondPeridemLPS *>(ours->force->bond)->dilation();
+  double vol = 0.0;
+  for (int i = 0; i < ours->atom->nlocal; i++) vol += 0.5 * 14.9e9 * theta[i] * theta[i];
+  std::printf("  energy density: peri/lps %.12e, ours %.12e, volumetric %.6e\n", pe_stock, pe_ours,
+              vol);
+  EXPECT_GT(vol, 1e-3 * pe_ours);
+  EXPECT_NEAR(pe_ours, vol + 2.0 * (pe_stock - vol), 1e-10 * pe_ours);
+}
+
+TEST_F(BondPeridemLPSVsPeriLPS, ImpactBreaksTheSameBonds)
+{
+  // in.peri.lps with the indenter at 20 m/s instead of 100 m/s: peri/lps's
+  // own short-range contact (nodes closer than 0.9 of their reference
+  // distance) stays inactive, so both codes solve the same equations. Our
+  // indenter stiffness is peri's times the node volume (force, not force
+  // density).
+  const std::string cyl = "region target cylinder y 0.0 0.0 0.0050 -0.0050 0.0 units box";
+  const std::string run = "velocity all set 0.0 0.0 0.0 sum no units box\nfix 1 all nve\n"
+                          "variable y equal 0.00155-step*dt*20\n"
+                          "fix 2 all indent {} sphere 0.0 v_y 0.0 0.0015 units box\n"
+                          "timestep 1.0e-7\nthermo 1000\n{}\nrun 1000\n";
+  stock = make_lammps();
+  lammps_commands_string(
+      stock, (setup(true, cyl) + fmt::format(run, 1e17, "compute dmg all damage/atom")).c_str());
+  ours = make_lammps();
+  lammps_commands_string(
+      ours, (setup(false, cyl) + fmt::format(run, 1e17 * VOLUME, "compute dmg all peridem/damage"))
+                .c_str());
+
+  const auto a = nodes(stock), b = nodes(ours);
+  ASSERT_EQ(a.size(), 3487u);
+  double worst = 0.0;
+  for (const auto &[tag, s] : a)
+    for (int d = 0; d < 3; d++) worst = std::max(worst, std::fabs(s.x[d] - b.at(tag).x[d]));
+
+  lammps_command(stock, "run 0 post no");
+  lammps_command(ours, "run 0 post no");
+  auto *dstock = static_cast<double *>(lammps_extract_compute(stock, "dmg", 1, 1));
+  auto *dours = static_cast<double **>(lammps_extract_compute(ours, "dmg", 1, 2));
+  double dsum_stock = 0.0, dsum_ours = 0.0, dworst = 0.0;
+  for (int i = 0; i < stock->atom->nlocal; i++) {
+    const int j = ours->atom->map(stock->atom->tag[i]);
+    dsum_stock += dstock[i];
+    dsum_ours += dours[j][0];
+    dworst = std::max(dworst, std::fabs(dstock[i] - dours[j][0]));
+  }
+  auto *stats = static_cast<double *>(lammps_extract_compute(ours, "dmg", 0, 1));
+  std::printf("  after 1000 steps: %.0f broken bonds, sum of node damage %.6f (peri/lps %.6f),\n"
+              "  largest position difference %.2e m (lattice 5e-4 m), node damage %.2e\n",
+              stats[1], dsum_ours, dsum_stock, worst, dworst);
+  EXPECT_GT(stats[1], 1000.0); // the impact really breaks bonds
+  EXPECT_LT(dworst, 1e-12);
+  EXPECT_LT(worst, 1e-10);
+}
