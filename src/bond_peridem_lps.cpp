@@ -19,6 +19,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
+#include "lmp_peridem_bond_loop.h"
 #include "force.h"
 #include "memory.h"
 #include "neighbor.h"
@@ -223,16 +224,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 
   // (3) force pass
   const peridem::LpsConstants *lc = constants.data();
-  int current = -1;
-  double fsum[3] = {0.0, 0.0, 0.0};
-  auto flush = [&]() {
-    if (current < 0) return;
-    double *fc = f + 3 * current;
-    fc[0] += fsum[0];
-    fc[1] += fsum[1];
-    fc[2] += fsum[2];
-    fsum[0] = fsum[1] = fsum[2] = 0.0;
-  };
+  PERIDEM::BondForceStore store(f); // forces on i1 summed in registers
   double ebond = 0.0;
   for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
@@ -246,19 +238,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
                                              theta_over_m[i2], inv_m[i1], inv_m[i2]);
     // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
     const double fbond = r > 0.0 ? -F / r : 0.0;
-    if (i1 != current) {
-      flush();
-      current = i1;
-    }
-    fsum[0] += delx * fbond;
-    fsum[1] += dely * fbond;
-    fsum[2] += delz * fbond;
-    if (newton_bond || i2 < nlocal) {
-      double *f2 = f + 3 * i2;
-      f2[0] -= delx * fbond;
-      f2[1] -= dely * fbond;
-      f2[2] -= delz * fbond;
-    }
+    store.add(i1, i2, newton_bond || i2 < nlocal, delx, dely, delz, fbond);
     if (evflag) {
       if (eflag)
         ebond = peridem::lps_bond_energy(lc[type], bc[n].k, bc[n].r0, e, theta_of(i1), theta_of(i2),
@@ -269,7 +249,6 @@ void BondPeridemLPS::compute(int eflag, int vflag)
         peridem::bond_breaks(e / bc[n].r0, s0[type], breakage))
       break_bond(n, i1, i2, bc[n].r0, s0[type]);
   }
-  flush();
 }
 
 /* ----------------------------------------------------------------------

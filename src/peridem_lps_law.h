@@ -5,7 +5,7 @@
 //         volume m_x, dilation theta_x, deviatoric extension e^d; eq. (10) critical stretch
 //         (lps_critical_stretch in peridem_bond_law.h); eq. (33)-(34) discrete sums.
 //  Silling, Epton, Weckner, Xu & Askari, J. Elasticity 88 (2007): the LPS in 3D.
-//  Le, Silling & Bobaru, Int. J. Multiscale Comput. Eng. (2014): the 2D LPS.
+//  Le, Chan & Schwartz, Int. J. Numer. Meth. Eng. 98 (2014) 547: the 2D LPS.
 //
 // In d dimensions, with influence omega(r), partial-volume factor beta and extension
 // e = |y| - r of a bond of reference length r (sums over the intact bonds of node i):

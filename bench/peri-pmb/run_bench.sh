@@ -4,15 +4,21 @@
 # and the same problem with bond_style peridem (examples/peri-impact), on 1
 # and 2 MPI ranks, in one run. Prints a markdown table for the README.
 # Usage: bench/peri-pmb/run_bench.sh [build dir] [repeats]
+# PERIDEM_BENCH_STOCK, PERIDEM_BENCH_EXAMPLE (folder/input under examples/)
+# and PERIDEM_BENCH_STYLES ("stock name|our name") select another pair of
+# runs (bench/peri-lps/run_bench.sh).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$(realpath "${1:-$here/build}")"
 repeats="${2:-3}"
 source "$here/unittest/scripts/mpi_env.sh"
-stock_input=/usr/share/lammps/examples/peri/in.peri.pmb
+stock_input=${PERIDEM_BENCH_STOCK:-/usr/share/lammps/examples/peri/in.peri.pmb}
+example=${PERIDEM_BENCH_EXAMPLE:-peri-impact/in.peri_impact}
+IFS='|' read -r stock_name our_name <<< "${PERIDEM_BENCH_STYLES:-peri/pmb|bond_style peridem}"
 work="$(mktemp -d)"
+cp "$here/examples/$(dirname "$example")"/* "$work/"
 cp "$stock_input" "$work/in.stock"
-cp "$here/examples/peri-impact/in.peri_impact" "$work/in.peridem"
+cp "$here/examples/$example" "$work/in.peridem"
 cd "$work"
 
 # best of $repeats: loop time, memory per rank (MB, max), bonds (for ours)
@@ -21,7 +27,7 @@ measure() { # np input
   for _ in $(seq "$repeats"); do
     mpirun -np "$1" "$build/lmp_peridem" -in "$2" -log log.bench -screen none
     local t
-    t=$(awk '/^Loop time of/ {print $4}' log.bench | tail -n 1)
+    t=$(awk '/^Loop time of/ {s += $4} END {print s}' log.bench) # all runs of the input
     best=$(python3 -c "print(min($best, $t))")
     mem=$(awk '/Per MPI rank memory allocation/ {print $(NF-1)}' log.bench | tail -n 1)
   done
@@ -32,7 +38,7 @@ bonds=$(mpirun -np 1 "$build/lmp_peridem" -in in.peridem -log log.bonds -screen 
         awk '/Added .* bonds/ {print $2}' log.bonds)
 natoms=3487
 steps=1000
-echo "| ranks | stock peri/pmb: s/step | bond_style peridem: s/step | speed-up | bond updates/s | memory/node (stock, ours) |"
+echo "| ranks | stock $stock_name: s/step | $our_name: s/step | speed-up | bond updates/s | memory/node (stock, ours) |"
 echo "|---|---|---|---|---|---|"
 for np in 1 2; do
   read -r ts ms < <(measure "$np" in.stock)

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 
@@ -208,6 +209,40 @@ TEST_F(BondPeridemLPS, PatchTest2D)
         previous = p.stress_error;
       }
       EXPECT_LT(previous, 0.01); // measured 0.0047-0.0071
+    }
+  }
+}
+
+// bond_coeff ... break no: a stretch far beyond s0 breaks no bond of that
+// type (both bond styles), and write_data keeps the setting
+TEST_F(BondPeridemLPS, UnbreakableBondTypes)
+{
+  for (const char *style : {"peridem", "peridem/lps"}) {
+    const std::string coeff =
+        std::string(style) == "peridem" ? "c 1e20 s0 1e-4" : "K 2e9 G 1e9 s0 1e-4";
+    for (int breakable : {1, 0}) {
+      TearDown();
+      SetUp();
+      command(block(3, 5, 1.5, style, coeff + (breakable ? "" : " break no")));
+      command("compute dmg all peridem/damage\nthermo_style custom step c_dmg[2]\n"
+              "displace_atoms all ramp x -1e-5 1e-5 x 0 0.004 units box\nrun 0 post no");
+      const double broken = static_cast<double *>(lammps_extract_compute(lmp, "dmg", 0, 1))[1];
+      std::printf("  %s, break %s: %g bonds broken\n", style, breakable ? "yes" : "no", broken);
+      if (breakable)
+        EXPECT_GT(broken, 100.0);
+      else
+        EXPECT_EQ(broken, 0.0);
+      if (!breakable) {
+        command("write_data " + scratch() + "unbreakable.data");
+        std::FILE *fp = std::fopen((scratch() + "unbreakable.data").c_str(), "r");
+        ASSERT_NE(fp, nullptr);
+        char line[512];
+        bool found = false;
+        while (std::fgets(line, sizeof(line), fp))
+          if (std::strstr(line, "break no")) found = true;
+        std::fclose(fp);
+        EXPECT_TRUE(found);
+      }
     }
   }
 }

@@ -5,6 +5,7 @@
 // are the same.
 
 #include "lammps_fixture.h"
+#include "peri_compare.h"
 
 #include "atom.h"
 #include "lammps.h"
@@ -19,20 +20,6 @@ using namespace LAMMPS_NS;
 namespace {
 
 constexpr double VOLUME = 1.25e-10, DENSITY = 2200.0;
-
-struct NodeState {
-  std::array<double, 3> x, f;
-};
-
-std::map<tagint, NodeState> nodes(LAMMPS *lmp)
-{
-  std::map<tagint, NodeState> out;
-  Atom *atom = lmp->atom;
-  for (int i = 0; i < atom->nlocal; i++)
-    out[atom->tag[i]] = {{atom->x[i][0], atom->x[i][1], atom->x[i][2]},
-                         {atom->f[i][0], atom->f[i][1], atom->f[i][2]}};
-  return out;
-}
 
 // the target of LAMMPS's examples/peri/in.peri.pmb (or a cube), either style
 std::string setup(bool stock, const std::string &region)
@@ -77,24 +64,7 @@ TEST_F(BondPeridemVsPeriPmb, ForcesOfADeformedBlockAgree)
   ours = make_lammps();
   lammps_commands_string(ours, (setup(false, cube) + deform).c_str());
 
-  const auto a = nodes(stock), b = nodes(ours);
-  ASSERT_EQ(a.size(), 2197u);
-  ASSERT_EQ(a.size(), b.size());
-  double worst = 0.0, fmax = 0.0;
-  for (const auto &[tag, s] : a) {
-    const NodeState &t = b.at(tag);
-    for (int d = 0; d < 3; d++) ASSERT_EQ(s.x[d], t.x[d]);
-    double diff = 0.0, norm = 0.0;
-    for (int d = 0; d < 3; d++) {
-      diff += std::pow(s.f[d] - t.f[d] / VOLUME, 2);
-      norm += s.f[d] * s.f[d];
-    }
-    fmax = std::max(fmax, std::sqrt(norm));
-    worst = std::max(worst, std::sqrt(diff / norm));
-  }
-  std::printf("  largest per-atom relative force difference: %.2e (max |f| %.3e)\n", worst, fmax);
-  EXPECT_GT(fmax, 1e9); // the block is really deformed
-  EXPECT_LT(worst, 1e-10);
+  peri_compare::expect_same_forces(stock, ours, VOLUME, 2197);
 }
 
 TEST_F(BondPeridemVsPeriPmb, ImpactBreaksTheSameBonds)
@@ -117,29 +87,5 @@ TEST_F(BondPeridemVsPeriPmb, ImpactBreaksTheSameBonds)
       ours, (setup(false, cyl) + fmt::format(run, 1e17 * VOLUME, "compute dmg all peridem/damage"))
                 .c_str());
 
-  const auto a = nodes(stock), b = nodes(ours);
-  ASSERT_EQ(a.size(), 3487u);
-  double worst = 0.0;
-  for (const auto &[tag, s] : a)
-    for (int d = 0; d < 3; d++) worst = std::max(worst, std::fabs(s.x[d] - b.at(tag).x[d]));
-
-  // damage per node: peri's (volume-weighted, equal volumes here) and ours
-  lammps_command(stock, "run 0 post no");
-  lammps_command(ours, "run 0 post no");
-  auto *dstock = static_cast<double *>(lammps_extract_compute(stock, "dmg", 1, 1));
-  auto *dours = static_cast<double **>(lammps_extract_compute(ours, "dmg", 1, 2));
-  double dsum_stock = 0.0, dsum_ours = 0.0, dworst = 0.0;
-  for (int i = 0; i < stock->atom->nlocal; i++) {
-    const int j = ours->atom->map(stock->atom->tag[i]);
-    dsum_stock += dstock[i];
-    dsum_ours += dours[j][0];
-    dworst = std::max(dworst, std::fabs(dstock[i] - dours[j][0]));
-  }
-  auto *stats = static_cast<double *>(lammps_extract_compute(ours, "dmg", 0, 1));
-  std::printf("  after 1000 steps: %.0f broken bonds, sum of node damage %.6f (peri/pmb %.6f),\n"
-              "  largest position difference %.2e m (lattice 5e-4 m), node damage %.2e\n",
-              stats[1], dsum_ours, dsum_stock, worst, dworst);
-  EXPECT_GT(stats[1], 5000.0); // the impact really breaks bonds
-  EXPECT_LT(dworst, 1e-12);
-  EXPECT_LT(worst, 1e-10); // measured 1.6e-13 m
+  peri_compare::expect_same_impact(stock, ours, 3487, 5000.0);
 }

@@ -60,3 +60,15 @@ add_test(NAME example.peri_lps_impact_ranks
           "1" "2" "4" "2 -var newton off" "4 -var newton off"
           "2 -var restart 1" "2 -var restart 1 -var newton off")
 set_tests_properties(example.peri_lps_impact_ranks PROPERTIES TIMEOUT 600)
+
+# with create_peridem_grains, cut_peridem_bonds and pair_style peridem/contact
+# (2d, material M1, the paper's 3d constants): runs, the notch counts as
+# broken bonds, the grains dilate on contact; 1 and 2 ranks
+foreach(_np 1 2)
+  add_test(NAME bond_lps_grains_np${_np}
+    COMMAND ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem> -in ${_in}/lps_grains.in
+            -log none -echo none -var potentials ${PROJECT_SOURCE_DIR}/potentials
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  set_tests_properties(bond_lps_grains_np${_np} PROPERTIES
+    PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
+endforeach()
