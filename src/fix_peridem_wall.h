@@ -71,6 +71,8 @@ class FixPeridemWall : public Fix {
   int lost_error; // 1: a node beyond a wall ends the run, 0: counted and warned
   int servo_any, var_any;
   int in_setup;
+  bool start_checked = false; // nodes within Rc of a wall at the first step reported
+  void check_start();
 
   // this rank's sums of the latest force evaluation, then the totals
   enum { NSUM = 3 * peridem::kMaxWalls + 3 }; // reactions, energy, nodes lost, dissipated

@@ -44,7 +44,7 @@ peridem_wall_error(shear_normal "ylo 0.0 shear ylo 0.1 0.2 0 Kn 1 Rc 0.5"
   "shear velocity of wall ylo must lie in the wall")
 # a node completely past a wall (by more than Rc) ends the run by default
 peridem_add_error_test(wall_lost_node ${_in}/wall_error.in
-  "atom 1 is 1.5 beyond wall yhi \\(more than Rc = 0.5\\): it crossed the wall"
+  "1 nodes lie more than Rc = 0.5 beyond a wall at the first step \\(e.g. grain 1 / wall yhi\\): a wall placed through a grain"
   -var wall "ylo -1 yhi -0.5 Kn 1 Rc 0.5" -var nsteps 0)
 
 # Rc larger than the horizon: a warning (doc/fix_peridem_wall.rst), the run goes on
