@@ -21,6 +21,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
@@ -625,6 +626,7 @@ void PairPeridemContact::report_time_step()
       in.node_volume = std::max(-a[1], -b[1]);
       in.rho = std::min(a[2], b[2]);
       in.bond_omega2 = std::max(bond_omega2[i], bond_omega2[j]);
+      in.walls = modify->find_fix_by_style("^peridem/wall") >= 0;
       in.Kn = p.Kn;
       in.Rc = p.Rc;
       in.damping_ratio = p.damping == peridem::ContactDamping::Nodal

@@ -183,7 +183,7 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
     if (n <= 0.0) {
       const double ball = two_d ? kContactPi * R * R : 4.0 / 3.0 * kContactPi * R * R * R;
       const double wall = two_d ? 2.0 * R * R : kContactPi * R * R * R; // k_wall/(K_n V)
-      n = std::ceil(ball / V) / in.dimension + std::ceil(wall / V);
+      n = std::ceil(ball / V) / in.dimension + (in.walls ? std::ceil(wall / V) : 0.0);
     }
     out.n_contacts = n;
     const double z = in.damping_ratio;

@@ -297,7 +297,8 @@ inline double grain_node_share(double node_volume, double grain_volume)
 //  contact:  a node with partners in its whole contact ball (isotropic, ceil(|B_Rc|/V) springs
 //            K_n V^2, V the largest nodal volume) and a wall (normal only, the wall stiffness at
 //            contact k_wall = 2 K_n V R_c^2 (2D) or pi K_n V R_c^3 (3D) as ceil(k_wall/(K_n V^2))
-//            springs): n_c = ceil(|B_Rc|/V)/d + ceil(k_wall/(K_n V^2)) effective springs on the
+//            springs, only where there are walls): n_c = ceil(|B_Rc|/V)/d + ceil(k_wall/(K_n V^2))
+//            effective springs on the
 //            smallest nodal mass m: dt_c = sqrt(2 m/(n_c K_n V^2)) times the damping factor.
 //  combined: omega^2 <= omega_b^2 + omega_c^2  =>  dt = 1/sqrt(1/dt_b^2 + 1/dt_c^2);
 //            recommended = safety * dt.
@@ -315,6 +316,7 @@ struct TimeStepInput {
   double Rc = 0.0;
   double damping_ratio = 0.0; // contact damping ratio (r_d, or zeta of eq. 23)
   double n_contacts = 0.0;    // 0: default above
+  bool walls = true;          // default n_c: add the wall term (a fix peridem/wall exists)
   double safety = 0.8;
 };
 struct TimeStepEstimate {

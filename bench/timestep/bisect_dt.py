@@ -31,6 +31,9 @@ ap.add_argument("--lmp", default=os.path.join(root, "build/lmp_peridem"))
 ap.add_argument("--cases", default="bed4,bed5,rest5,rest4")
 ap.add_argument("--steps", type=int, default=5)
 ap.add_argument("--time", type=float, default=6e-4, help="physical time of a bed run (s)")
+ap.add_argument("--check", type=float, default=0.0,
+                help="no bisection: require a stable run at the critical estimate and an "
+                     "unstable one at CHECK x it; prints PERIDEM-PASS or PERIDEM-FAIL")
 a = ap.parse_args()
 pot = os.path.join(root, "potentials")
 
@@ -80,6 +83,19 @@ def run(case, dt):
         return True, est, "C_R = %.4f" % cr
     return True, est, "stable"
 
+
+if a.check > 0.0:
+    failed = False
+    for case in a.cases.split(","):
+        _, est, _ = run(case, a.time / 500) if case.startswith("bed") else run(case, 5e-8)
+        crit = est[1]
+        for factor, want in ((1.0, True), (a.check, False)):
+            ok, _, note = run(case, factor * crit)
+            print("%s: dt = %.4g (%.2f x critical estimate %.4g): %s (%s)" %
+                  (case, factor * crit, factor, crit, "stable" if ok else "unstable", note))
+            failed |= ok != want
+    print("PERIDEM-FAIL" if failed else "PERIDEM-PASS")
+    raise SystemExit(0)
 
 print("| case | estimate: recommended | critical | last stable dt | first unstable dt | "
       "threshold / critical |")

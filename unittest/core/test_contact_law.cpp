@@ -456,6 +456,9 @@ TEST(ContactLaw, StableTimeStep)
   // wall along its normal)
   EXPECT_DOUBLE_EQ(t.n_contacts, 3.5);
   EXPECT_NEAR(t.dt_contact, std::sqrt(2.0 * 1.2e-5 / (3.5 * 1e20 * 1e-16)), 1e-20);
+  c.walls = false; // no wall: the ball alone
+  EXPECT_DOUBLE_EQ(stable_time_step(c).n_contacts, 1.5);
+  c.walls = true;
   c.damping_ratio = 0.5;
   EXPECT_LT(stable_time_step(c).dt_contact, t.dt_contact);
   // combined: 1/dt^2 adds up, safety factor applied

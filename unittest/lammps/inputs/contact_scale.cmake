@@ -81,3 +81,14 @@ add_test(NAME bed_gs_70ns_eps5_warns
 set_tests_properties(bed_gs_70ns_eps5_warns PROPERTIES
   PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: time step 7e-08 exceeds the recommended"
   TIMEOUT 120)
+
+# the time-step estimate against the measured stability threshold on the PeriDEM paper's
+# two-particle drop (h = 0.1423 mm, damping centroid 0.8 100), with K_n eps^5 (its Table 2)
+# and eps^4: stable at the critical estimate, unstable at twice it (bisected thresholds
+# 2.1x and 1.3x the estimate, doc/pair_peridem_contact.rst)
+add_test(NAME timestep_estimate_vs_threshold_drop
+  COMMAND python3 ${PROJECT_SOURCE_DIR}/bench/timestep/bisect_dt.py
+          --lmp $<TARGET_FILE:lmp_peridem> --cases rest5,rest4 --check 2.0)
+set_tests_properties(timestep_estimate_vs_threshold_drop PROPERTIES
+  PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|Traceback"
+  TIMEOUT 300)
