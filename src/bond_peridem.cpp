@@ -609,6 +609,7 @@ void *BondPeridem::extract(const char *str, int &dim)
   if (strcmp(str, "c") == 0) return (void *)c;
   if (strcmp(str, "s0") == 0) return (void *)s0;
   if (strcmp(str, "horizon") == 0) return (void *)horizon;
+  if (strcmp(str, "conic") == 0) return (void *)conic; // int per type: 1 conic micromodulus
   dim = 0;
   return nullptr;
 }

@@ -13,6 +13,7 @@
 
 #include "lmp_peridem_parse.h"
 #include "force.h"
+#include "lmp_peridem_startup.h"
 #include "pair_peridem_contact.h"
 
 #include "atom.h"
@@ -290,10 +291,54 @@ void FixPeridemWall::init()
 
 void FixPeridemWall::setup(int vflag)
 {
+  if (!start_checked) check_start();
   lost_local = 0;
   in_setup = 1;
   post_force(vflag);
   in_setup = 0;
+}
+
+/* ----------------------------------------------------------------------
+   first run only: nodes already within Rc of a wall (warning), or wholly
+   beyond one (an error unless 'lost warn': a wall placed through a grain
+   is a placement mistake, not a time-step problem); lmp_peridem_startup.h
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::check_start()
+{
+  start_checked = true;
+  update_variable_walls();
+  const peridem::WallBox box = make_box();
+  PERIDEM::OverlapReport near, beyond;
+  double rc_max = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double Rc = (contact_from_pair ? type_params[atom->type[i]] : contact.params).Rc;
+    rc_max = std::max(rc_max, Rc);
+    int wmin = -1;
+    double dmin = Rc;
+    for (int w = 0; w < nwalls; w++) {
+      if (!box.active[w]) continue;
+      const double d = peridem::wall_distance(box, w, atom->x[i]);
+      if (d < dmin) {
+        dmin = d;
+        wmin = w;
+      }
+    }
+    if (wmin < 0) continue;
+    const tagint grain = atom->molecule_flag ? atom->molecule[i] : atom->tag[i];
+    (dmin <= -Rc ? beyond : near).add(grain, fmt::format("wall {}", FACES[wmin]));
+  }
+  double rc_all = 0.0;
+  MPI_Allreduce(&rc_max, &rc_all, 1, MPI_DOUBLE, MPI_MAX, world);
+  const bigint nbeyond = beyond.total(lmp);
+  if (nbeyond > 0 && lost_error)
+    error->all(FLERR,
+               "{} {}: {} nodes lie more than Rc = {} beyond a wall at the first step (e.g. {}): "
+               "a wall placed through a grain? Move the wall or the grains (or use 'lost warn' "
+               "to let them be)",
+               STYLE, id, nbeyond, rc_all, beyond.example_list());
+  near.report(lmp, fmt::format("{} {}", STYLE, id), "nodes and walls", rc_all);
 }
 
 void FixPeridemWall::min_setup(int vflag)
@@ -619,5 +664,6 @@ void FixPeridemWall::restart(char *buf)
     }
   }
   dissipated_local = comm->me == 0 ? list[1 + 2 * nwalls] : 0.0;
+  start_checked = true; // a restarted bed rests on its walls
   check_order("from the restart file");
 }

@@ -78,6 +78,8 @@ class FixPeridemWall : public Fix {
   bigint deleted_total; // nodes deleted so far (lost delete), all ranks
   int servo_any, var_any;
   int in_setup;
+  bool start_checked = false; // nodes within Rc of a wall at the first step reported
+  void check_start();
 
   // this rank's sums of the latest force evaluation, then the totals
   enum { NSUM = 3 * peridem::kMaxWalls + 3 }; // reactions, energy, nodes lost, dissipated

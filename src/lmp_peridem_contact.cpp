@@ -82,6 +82,15 @@ int ContactParser::consume_one(int narg, char **arg, int iarg)
     horizon = positive(narg, arg, iarg + 1, "horizon");
     return 2;
   }
+  if (key == "Kn_form") {
+    if (iarg + 1 >= narg) lmp->error->all(FLERR, "{}: Kn_form needs eps4 or eps5", command);
+    const std::string form = arg[iarg + 1];
+    if (form != "eps4" && form != "eps5")
+      lmp->error->all(FLERR, "{}: Kn_form must be eps4 or eps5, not {}", command, form);
+    spec.kn_form = form == "eps4" ? peridem::KnForm::Eps4 : peridem::KnForm::Eps5;
+    have_form = true;
+    return 2;
+  }
   if (key == "Rc") {
     p.Rc = positive(narg, arg, iarg + 1, "Rc (contact radius)");
     have_rc = true;
@@ -185,6 +194,16 @@ ContactSpec ContactParser::finish(int dimension) const
     error->all(FLERR, "{}: give exactly one of 'Rc value' and 'Rc_factor f' (with spacing h)",
                command);
 
+  // K_n = 18 k/(pi eps^4) per unit thickness in 2D, eps^5 in 3D (contact_stiffness); eps^4
+  // in 3D would give a K_n with the units of no force at all
+  if (!have_form)
+    out.kn_form = peridem::default_kn_form(dimension);
+  else if (out.kn_form == peridem::KnForm::Eps4 && dimension != 2)
+    error->all(FLERR,
+               "{}: Kn_form eps4 (force per unit thickness) is for 2d simulations only; a {}d "
+               "simulation uses eps5",
+               command, dimension);
+
   out.horizon = horizon > 0.0 ? horizon : (have_material ? material_horizon : 0.0);
   if (have_material) {
     if (!(out.horizon > 0.0))
@@ -198,11 +217,11 @@ ContactSpec ContactParser::finish(int dimension) const
     if (!(k > 0.0))
       error->all(FLERR, "{}: {} gives neither a bulk modulus K nor E", command, out.origin);
     out.bulk_modulus = k;
-    p.Kn = peridem::contact_stiffness(k, out.horizon);
+    p.Kn = peridem::contact_stiffness(k, out.horizon, out.kn_form);
   } else {
     out.origin = "Kn given";
     if (out.horizon > 0.0)
-      out.bulk_modulus = p.Kn * peridem::kContactPi * std::pow(out.horizon, 5) / 18.0;
+      out.bulk_modulus = peridem::bulk_modulus_from_stiffness(p.Kn, out.horizon, out.kn_form);
   }
 
   if (have_factor) {
@@ -256,6 +275,12 @@ ContactSpec parse_contact(LAMMPS *lmp, const std::string &command, int narg, cha
   return parser.finish(dimension);
 }
 
+std::string describe_kn_form(peridem::KnForm form)
+{
+  return form == peridem::KnForm::Eps4 ? "Kn_form eps4: 18 k/(pi eps^4), 2d per unit thickness"
+                                       : "Kn_form eps5: 18 k/(pi eps^5)";
+}
+
 std::string describe_contact(const ContactSpec &spec)
 {
   const peridem::ContactParams &p = spec.params;
@@ -272,8 +297,8 @@ std::string describe_contact(const ContactSpec &spec)
     friction = fmt::format("regularized mu = {}", p.mu);
   else if (p.friction == peridem::ContactFriction::Coulomb)
     friction = fmt::format("coulomb mu = {}", p.mu);
-  return fmt::format("Kn = {} ({}), Rc = {}, damping {}, friction {}", p.Kn, spec.origin, p.Rc,
-                     damping, friction);
+  return fmt::format("Kn = {} ({}, {}), Rc = {}, damping {}, friction {}", p.Kn,
+                     describe_kn_form(spec.kn_form), spec.origin, p.Rc, damping, friction);
 }
 
 } // namespace PERIDEM

@@ -5,11 +5,14 @@
    They are shared by `pair_coeff` of pair_style peridem/contact and by
    `fix peridem/wall`, so both read the same words the same way:
 
-     material FILE NAME      K_n = 18 k/(pi eps^5) from the material's bulk
+     material FILE NAME      K_n = 18 k/(pi eps^p) from the material's bulk
                              modulus k and horizon eps (contact_stiffness)
      Kn value                K_n given directly (force/(length volume^2))
      horizon eps             horizon (overrides the material's; with Kn it
-                             gives k = pi eps^5 K_n/18 for restitution)
+                             gives k = pi eps^p K_n/18 for restitution)
+     Kn_form eps4 | eps5     p: default eps4 in 2D (force per unit thickness),
+                             eps5 in 3D; eps5 in 2D for the PeriDEM seed's
+                             tests; eps4 in 3D is an error
      Rc value                contact radius R_c
      Rc_factor f             R_c = f h with the node spacing h of
      spacing h               (the seeds use f = 0.95; R_c = eps/5 is Rc)
@@ -44,7 +47,9 @@ struct ContactSpec {
   double bulk_modulus = 0.0; // k behind K_n (0: Kn given without a horizon)
   double horizon = 0.0;      // eps (0: not known)
   double density = 0.0;      // from the material (0: not known)
-  std::string origin;        // for the log, e.g. "material M1 of file"
+  // K_n = 18 k/(pi eps^p): p = 4 (2D default) or 5 (3D, or Kn_form eps5)
+  peridem::KnForm kn_form = peridem::KnForm::Eps5;
+  std::string origin; // for the log, e.g. "material M1 of file"
   // damping centroid eps_n C: a dashpot between the centres of two grains in
   // contact (PeriDEM seed eq. 26-30), applied by pair_style peridem/contact.
   // params.damping is then None (no nodal dashpot) and params.eps_n, C and
@@ -83,6 +88,7 @@ class ContactParser {
   std::string command;
   ContactSpec spec;
   bool have_material = false, have_kn = false, have_rc = false, have_factor = false;
+  bool have_form = false;
   bool centroid_allowed = false;
   int consumed = 0;
   double material_k = 0.0, material_horizon = 0.0, material_E = 0.0;
@@ -97,6 +103,9 @@ class ContactParser {
 // All of arg[0..narg-1] must be contact keywords (pair_coeff after the types).
 ContactSpec parse_contact(LAMMPS_NS::LAMMPS *lmp, const std::string &command, int narg, char **arg,
                           int dimension, bool allow_centroid = false);
+
+// "Kn_form eps4: 18 k/(pi eps^4), 2d per unit thickness" (or eps5), for the log
+std::string describe_kn_form(peridem::KnForm form);
 
 // One line for the log: "Kn = ..., Rc = ..., damping ..., friction ...".
 std::string describe_contact(const ContactSpec &spec);

@@ -21,12 +21,14 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
 
 #include "lmp_peridem_compat.h"
 #include "lmp_peridem_parse.h"
+#include "lmp_peridem_startup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -462,11 +464,17 @@ void PairPeridemContact::mix(int i, int j)
                "{}: types {} and {} use different damping or friction laws: give pair_coeff {} "
                "{} explicitly",
                STYLE, i, j, i, j);
+  if (a.kn_form != b.kn_form)
+    error->all(FLERR,
+               "{}: types {} and {} use different Kn_form ({} and {}): give pair_coeff {} {} "
+               "explicitly",
+               STYLE, i, j, peridem::kn_form_name(a.kn_form), peridem::kn_form_name(b.kn_form), i,
+               j);
   if (a.bulk_modulus > 0.0 && b.bulk_modulus > 0.0 && a.horizon > 0.0 && b.horizon > 0.0) {
     p.Kn = (a.horizon == b.horizon)
-               ? peridem::contact_stiffness(a.bulk_modulus, b.bulk_modulus, a.horizon)
+               ? peridem::contact_stiffness(a.bulk_modulus, b.bulk_modulus, a.horizon, a.kn_form)
                : peridem::contact_stiffness_mixed(a.bulk_modulus, a.horizon, b.bulk_modulus,
-                                                  b.horizon);
+                                                  b.horizon, a.kn_form);
     m.bulk_modulus = peridem::harmonic_mean(a.bulk_modulus, b.bulk_modulus);
   } else {
     p.Kn = peridem::harmonic_mean(a.params.Kn, b.params.Kn);
@@ -541,7 +549,52 @@ void PairPeridemContact::init_style()
     error->all(FLERR, "{} with damping or friction needs ghost velocities: use comm_modify vel yes",
                STYLE);
   PERIDEM::request_half_neighbor_list(neighbor, this, instance_me);
+  double reach = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j])
+        reach = std::max(
+            {reach, spec[i][j].params.Rc, spec[i][j].centroid ? spec[i][j].centroid_reach() : 0.0});
+  PERIDEM::check_neighbor_skin(lmp, STYLE, reach);
+}
+
+/* ----------------------------------------------------------------------
+   after the first neighbour build of the first run: nodes of different
+   grains already in contact (start-up check, lmp_peridem_startup.h)
+------------------------------------------------------------------------- */
+
+void PairPeridemContact::setup()
+{
+  // after the neighbour build: the bond list of this run is there
   report_time_step();
+  if (start_checked) return;
+  start_checked = true;
+  report_start_overlaps();
+}
+
+void PairPeridemContact::report_start_overlaps()
+{
+  double **x = atom->x;
+  const tagint *molecule = atom->molecule;
+  const int *type = atom->type;
+  PERIDEM::OverlapReport overlaps;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (molecule[i] == molecule[j]) continue;
+      const double Rc = spec[type[i]][type[j]].params.Rc;
+      const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
+      if (dx * dx + dy * dy + dz * dz < Rc * Rc)
+        overlaps.add(molecule[i], fmt::format("grain {}", molecule[j]));
+    }
+  }
+  double rc_max = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j]) rc_max = std::max(rc_max, spec[i][j].params.Rc);
+  overlaps.report(lmp, STYLE, "node pairs of different grains", rc_max);
 }
 
 /* ----------------------------------------------------------------------
@@ -551,51 +604,126 @@ void PairPeridemContact::init_style()
 
 void PairPeridemContact::report_time_step()
 {
-  double mine[3] = {std::numeric_limits<double>::max(), 0.0, 0.0}; // min mass, max V, max rho
+  // per atom type: smallest node mass, largest node volume, smallest density
+  const int nt = atom->ntypes;
+  std::vector<double> mine(3 * (nt + 1)), all(3 * (nt + 1));
+  // the largest volume is stored negated, so that one MPI_MIN reduces all three
+  for (double &v : mine) v = std::numeric_limits<double>::max();
   for (int i = 0; i < atom->nlocal; i++) {
-    mine[0] = std::min(mine[0], atom->rmass[i]);
-    mine[1] = std::max(mine[1], atom->vfrac[i]);
-    mine[2] = std::max(mine[2], atom->rmass[i] / atom->vfrac[i]);
+    double *m = &mine[3 * atom->type[i]];
+    m[0] = std::min(m[0], atom->rmass[i]);
+    m[1] = std::min(m[1], -atom->vfrac[i]);
+    m[2] = std::min(m[2], atom->rmass[i] / atom->vfrac[i]);
   }
-  double minmass, maxvals[2];
-  MPI_Allreduce(&mine[0], &minmass, 1, MPI_DOUBLE, MPI_MIN, world);
-  MPI_Allreduce(&mine[1], maxvals, 2, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(mine.data(), all.data(), (int)mine.size(), MPI_DOUBLE, MPI_MIN, world);
   if (atom->natoms == 0) return;
 
-  peridem::TimeStepInput in;
-  in.dimension = domain->dimension;
-  in.min_node_mass = minmass;
-  in.node_volume = maxvals[0];
-  in.rho = minmass / maxvals[0];
+  const std::vector<double> bond_omega2 = bond_omega2_of_types();
+
+  peridem::TimeStepEstimate overall;
+  std::string lines;
+  for (int i = 1; i <= nt; i++)
+    for (int j = i; j <= nt; j++) {
+      const double *a = &all[3 * i], *b = &all[3 * j];
+      if (a[0] == std::numeric_limits<double>::max() || b[0] == std::numeric_limits<double>::max())
+        continue; // a type without nodes
+      if (!setflag[i][j] && !(setflag[i][i] && setflag[j][j])) continue;
+      const peridem::ContactParams &p = spec[i][j].params;
+      peridem::TimeStepInput in;
+      in.dimension = domain->dimension;
+      in.min_node_mass = std::min(a[0], b[0]);
+      in.node_volume = std::max(-a[1], -b[1]);
+      in.rho = std::min(a[2], b[2]);
+      in.bond_omega2 = std::max(bond_omega2[i], bond_omega2[j]);
+      in.walls = modify->find_fix_by_style("^peridem/wall") >= 0;
+      in.Kn = p.Kn;
+      in.Rc = p.Rc;
+      in.damping_ratio = p.damping == peridem::ContactDamping::Nodal
+                             ? p.r_d
+                             : (p.damping == peridem::ContactDamping::Restitution
+                                    ? peridem::damping_ratio_from_restitution(p.eps_n)
+                                    : 0.0);
+      peridem::TimeStepEstimate est;
+      try {
+        est = peridem::stable_time_step(in);
+      } catch (peridem::ParameterError &e) {
+        error->all(FLERR, "{}: time step estimate for types {} {}: {}", STYLE, i, j, e.what());
+      }
+      lines += fmt::format("{}: types {} {}: time step estimate {:.4g} (critical {:.4g}: bonds "
+                           "{:.4g}, contact {:.4g} with damping ratio {:.3g})\n",
+                           STYLE, i, j, est.dt_recommended, est.dt_critical, est.dt_bond,
+                           est.dt_contact, in.damping_ratio);
+      if (est.dt_recommended < overall.dt_recommended) overall = est;
+    }
+  if (comm->me != 0 || lines.empty()) return;
+  lines += fmt::format("{}: recommended time step {:.4g} (critical {:.4g}: bonds {:.4g}, contact "
+                       "{:.4g})\n",
+                       STYLE, overall.dt_recommended, overall.dt_critical, overall.dt_bond,
+                       overall.dt_contact);
+  // runs in a loop would repeat it at every run: once per change (and time step)
+  lines += fmt::format("(time step {})", update->dt);
+  if (lines == last_time_step_report) return;
+  last_time_step_report = lines;
+  utils::logmesg(lmp, lines.substr(0, lines.rfind('(')));
+  if (update->dt > overall.dt_recommended)
+    error->warning(FLERR, "{}: time step {} exceeds the recommended {:.4g}", STYLE, update->dt,
+                   overall.dt_recommended);
+}
+
+/* ----------------------------------------------------------------------
+   the bonds' part of the time-step bound (peridem_contact_law.h): for
+   each node the tensor A_i = sum of c w V_i V_j/|xi| e e over its bonds
+   (reference geometry, bond_style peridem's c, horizon and micromodulus;
+   the volume correction, <= 1, left out: an upper bound), and per atom
+   type the largest 2 lambda_max(A_i)/m_i. Bonds stored on another rank
+   are not seen here (newton_bond): a node at a rank boundary may miss
+   some, the interior nodes that set the maximum do not.
+------------------------------------------------------------------------- */
+
+std::vector<double> PairPeridemContact::bond_omega2_of_types()
+{
+  const int nt = atom->ntypes;
+  std::vector<double> mine(nt + 1, 0.0), all(nt + 1, 0.0);
   int dim = 0;
   const double *c = force->bond ? (double *)force->bond->extract("c", dim) : nullptr;
   const double *eps = force->bond ? (double *)force->bond->extract("horizon", dim) : nullptr;
-  if (c && eps)
-    for (int t = 1; t <= atom->nbondtypes; t++)
-      if (c[t] > in.c) {
-        in.c = c[t];
-        in.horizon = eps[t];
-      }
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      const peridem::ContactParams &p = spec[i][j].params;
-      if (p.Kn > in.Kn) {
-        in.Kn = p.Kn;
-        in.Rc = p.Rc;
-        in.damping_ratio = p.damping == peridem::ContactDamping::Nodal
-                               ? p.r_d
-                               : (p.damping == peridem::ContactDamping::Restitution
-                                      ? peridem::damping_ratio_from_restitution(p.eps_n)
-                                      : 0.0);
+  const int *conic = force->bond ? (int *)force->bond->extract("conic", dim) : nullptr;
+  const int nlocal = atom->nlocal;
+  if (c && eps && conic && neighbor->nbondlist > 0) {
+    const int d = domain->dimension;
+    std::vector<double> A(6 * (size_t)nlocal, 0.0);
+    double **x0 = atom->x0;
+    const double *vol = atom->vfrac;
+    for (int n = 0; n < neighbor->nbondlist; n++) {
+      const int *b = neighbor->bondlist[n];
+      const int i1 = b[0], i2 = b[1], type = b[2];
+      if (type <= 0) continue;
+      double e[3] = {x0[i2][0] - x0[i1][0], x0[i2][1] - x0[i1][1], x0[i2][2] - x0[i1][2]};
+      PERIDEM::minimum_image(domain, e[0], e[1], e[2]);
+      const double r0 = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+      if (!(r0 > 0.0)) continue;
+      for (double &ek : e) ek /= r0;
+      const peridem::Micromodulus mm =
+          conic[type] ? peridem::Micromodulus::Conic : peridem::Micromodulus::Constant;
+      const double k0 = c[type] * peridem::micromodulus_value(mm, r0, eps[type]) / r0;
+      const double outer[6] = {e[0] * e[0], e[1] * e[1], e[2] * e[2],
+                               e[0] * e[1], e[0] * e[2], e[1] * e[2]};
+      for (const int i : {i1, i2}) {
+        if (i >= nlocal) continue;
+        const double k = k0 * vol[i] * vol[i == i1 ? i2 : i1];
+        for (int m = 0; m < 6; m++) A[6 * (size_t)i + m] += k * outer[m];
       }
     }
-  const peridem::TimeStepEstimate est = peridem::stable_time_step(in);
-  if (comm->me != 0) return;
-  utils::logmesg(lmp, "{}: recommended time step {:.4g} (bonds {:.4g}, contact {:.4g})\n", STYLE,
-                 est.dt_recommended, est.dt_bond, est.dt_contact);
-  if (update->dt > est.dt_recommended)
-    error->warning(FLERR, "{}: time step {} exceeds the recommended {:.4g}", STYLE, update->dt,
-                   est.dt_recommended);
+    for (int i = 0; i < nlocal; i++) {
+      const double *a = &A[6 * (size_t)i];
+      // 2D: (xx, yy, xy); 3D: (xx, yy, zz, xy, xz, yz)
+      const double a2[3] = {a[0], a[1], a[3]};
+      const double lambda = peridem::symmetric_max_eigenvalue(d == 2 ? a2 : a, d);
+      mine[atom->type[i]] = std::max(mine[atom->type[i]], 2.0 * lambda / atom->rmass[i]);
+    }
+  }
+  MPI_Allreduce(mine.data(), all.data(), nt + 1, MPI_DOUBLE, MPI_MAX, world);
+  return all;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -609,9 +737,10 @@ void PairPeridemContact::write_restart(FILE *fp)
       if (!setflag[i][j]) continue;
       const PERIDEM::ContactSpec &s = spec[i][j];
       fwrite(&s.params, sizeof(peridem::ContactParams), 1, fp);
-      const double extra[5] = {s.bulk_modulus, s.horizon, s.density, s.centroid ? 1.0 : 0.0,
-                               s.centroid_range};
-      fwrite(extra, sizeof(double), 5, fp);
+      const double extra[6] = {s.bulk_modulus,   s.horizon,
+                               s.density,        s.centroid ? 1.0 : 0.0,
+                               s.centroid_range, (double)peridem::kn_exponent(s.kn_form)};
+      fwrite(extra, sizeof(double), 6, fp);
     }
 }
 
@@ -625,18 +754,19 @@ void PairPeridemContact::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
       PERIDEM::ContactSpec &s = spec[i][j];
-      double extra[5];
+      double extra[6];
       if (comm->me == 0) {
         utils::sfread(FLERR, &s.params, sizeof(peridem::ContactParams), 1, fp, nullptr, error);
-        utils::sfread(FLERR, extra, sizeof(double), 5, fp, nullptr, error);
+        utils::sfread(FLERR, extra, sizeof(double), 6, fp, nullptr, error);
       }
       MPI_Bcast(&s.params, sizeof(peridem::ContactParams), MPI_BYTE, 0, world);
-      MPI_Bcast(extra, 5, MPI_DOUBLE, 0, world);
+      MPI_Bcast(extra, 6, MPI_DOUBLE, 0, world);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
       s.density = extra[2];
       s.centroid = extra[3] != 0.0;
       s.centroid_range = extra[4];
+      s.kn_form = extra[5] == 4.0 ? peridem::KnForm::Eps4 : peridem::KnForm::Eps5;
       s.origin = "restart file";
       spec[j][i] = s;
     }
@@ -657,6 +787,7 @@ void PairPeridemContact::read_restart_settings(FILE *fp)
   }
   MPI_Bcast(&self_contact, 1, MPI_INT, 0, world);
   MPI_Bcast(&total, 1, MPI_DOUBLE, 0, world);
+  start_checked = true; // a restarted bed is in contact: no start-up overlap report
   // the dissipated energy so far continues on rank 0
   dissipated = comm->me == 0 ? total : 0.0;
   pvector[0] = dissipated;

@@ -17,6 +17,7 @@ PairStyle(peridem/contact,PairPeridemContact);
 #include "pair.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -30,6 +31,7 @@ class PairPeridemContact : public Pair {
   void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
+  void setup() override;
   double init_one(int, int) override;
   double single(int, int, int, int, double, double, double, double &) override;
   void write_restart(FILE *) override;
@@ -56,6 +58,11 @@ class PairPeridemContact : public Pair {
   void allocate();
   void mix(int i, int j);
   void report_time_step();
+  // per atom type: max over its nodes of 2 lambda_max(A_i)/m_i of their bonds
+  std::vector<double> bond_omega2_of_types();
+  std::string last_time_step_report; // printed again only when it changes
+  bool start_checked = false;        // overlaps at the first step reported (setup())
+  void report_start_overlaps();
 
   // ---- damping centroid (PeriDEM seed §2.3.2, eq. 26-30) ----
   // Grains are molecule IDs. The pair loop records the grain pairs with a

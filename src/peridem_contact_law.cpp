@@ -1,6 +1,7 @@
 // PERIDEM: node-to-node contact law (see peridem_contact_law.h for references and conventions).
 #include "peridem_contact_law.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -132,6 +133,26 @@ double centroid_damping_force(const double sep_c[3], const double vrel_c[3], dou
    stable time step (formulas in the header)
 ------------------------------------------------------------------------------------------ */
 
+double symmetric_max_eigenvalue(const double *a, int dimension)
+{
+  if (dimension == 2) {
+    const double m = 0.5 * (a[0] + a[1]), d = 0.5 * (a[0] - a[1]);
+    return m + std::sqrt(d * d + a[2] * a[2]);
+  }
+  // 3x3: trigonometric solution of the characteristic polynomial (real symmetric)
+  const double xx = a[0], yy = a[1], zz = a[2], xy = a[3], xz = a[4], yz = a[5];
+  const double p1 = xy * xy + xz * xz + yz * yz;
+  const double q = (xx + yy + zz) / 3.0;
+  if (p1 == 0.0) return std::max(xx, std::max(yy, zz));
+  const double p2 = (xx - q) * (xx - q) + (yy - q) * (yy - q) + (zz - q) * (zz - q) + 2.0 * p1;
+  const double p = std::sqrt(p2 / 6.0);
+  const double b[6] = {(xx - q) / p, (yy - q) / p, (zz - q) / p, xy / p, xz / p, yz / p};
+  const double detb = b[0] * (b[1] * b[2] - b[5] * b[5]) - b[3] * (b[3] * b[2] - b[5] * b[4]) +
+                      b[4] * (b[3] * b[5] - b[1] * b[4]);
+  const double r = std::max(-1.0, std::min(1.0, 0.5 * detb));
+  return q + 2.0 * p * std::cos(std::acos(r) / 3.0);
+}
+
 TimeStepEstimate stable_time_step(const TimeStepInput &in)
 {
   if (in.dimension != 2 && in.dimension != 3)
@@ -149,18 +170,20 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
       integral = conic ? kContactPi * eps : 2.0 * kContactPi * eps;
     else
       integral = conic ? 2.0 / 3.0 * kContactPi * eps * eps : 2.0 * kContactPi * eps * eps;
-    out.dt_bond = bond_critical_time_step(in.rho, in.c * integral);
+    // isotropic family: lambda_max(A) = (1/d) of the row sum
+    out.dt_bond = bond_critical_time_step(in.rho, in.c * integral / in.dimension);
   }
+  if (in.bond_omega2 > 0.0) out.dt_bond = 2.0 / std::sqrt(in.bond_omega2);
 
   if (in.Kn > 0.0) {
     const double V = in.node_volume, m = in.min_node_mass, R = in.Rc;
     if (!(V > 0.0) || !(m > 0.0) || !(R > 0.0))
       throw ParameterError("stable_time_step: node volume, node mass and Rc must be > 0");
-    int n = in.n_contacts;
-    if (n <= 0) {
+    double n = in.n_contacts;
+    if (n <= 0.0) {
       const double ball = two_d ? kContactPi * R * R : 4.0 / 3.0 * kContactPi * R * R * R;
       const double wall = two_d ? 2.0 * R * R : kContactPi * R * R * R; // k_wall/(K_n V)
-      n = static_cast<int>(std::ceil(ball / V)) + static_cast<int>(std::ceil(wall / V));
+      n = std::ceil(ball / V) / in.dimension + (in.walls ? std::ceil(wall / V) : 0.0);
     }
     out.n_contacts = n;
     const double z = in.damping_ratio;

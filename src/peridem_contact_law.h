@@ -20,7 +20,7 @@
 //
 // Choices where the seeds are ambiguous (each is noted again where it is used):
 //  * K_n for unlike materials: both seeds take the harmonic mean of the BULK MODULI
-//    ([BL] below eq. 4.1, [JDBL] eq. 25 and Sec. 3.2) and then K_n = 18 k_eff/(pi eps^5).  For
+//    ([BL] below eq. 4.1, [JDBL] eq. 25 and Sec. 3.2) and then K_n = 18 k_eff/(pi eps^p).  For
 //    equal horizons that equals the harmonic mean of the two K_n; with unlike horizons (not
 //    covered by the seeds) contact_stiffness_mixed() takes the harmonic mean of the two K_n.
 //  * Sign of friction and damping: [BL] eq. (4.3) writes -mu|F_r| e_perp(y,x) and [JDBL]
@@ -58,11 +58,39 @@ constexpr double kContactPi = 3.14159265358979323846;
 // Parameters
 // ---------------------------------------------------------------------------------------
 
-// Normal contact stiffness K_n = 18 k/(pi eps^5)  ([BL] eq. 4.1, [JDBL] eq. 36), k the bulk
-// modulus, eps the horizon.  Units: force/(length volume^2), so K_n (R_c - r) V_i V_j is a force.
-inline double contact_stiffness(double bulk_modulus, double horizon)
+// Normal contact stiffness K_n = 18 k/(pi eps^p), k the bulk modulus, eps the horizon.
+//  p = 5 ([BL] eq. 4.1 as printed, [JDBL] eq. 36), the 3D form: volumes in m^3, so
+//    K_n (R_c - r) V_i V_j needs K_n in N/m^7 = Pa/m^5 to be a force (N); 18 k/(pi eps^5) is.
+//  p = 4, the 2D form: nodal "volumes" are areas (m^2) and forces are per unit thickness
+//    (N/m), so K_n needs N/m^6 = Pa/m^4, which 18 k/(pi eps^4) has; eps^5 in 2D gives a
+//    "force" in N/m^2, numerically 1/eps times too stiff (2000x in SI for eps = 0.5 mm).
+//    Bhattacharya & Lipton's public code (perigrain, exp_dict.py and the 2D setup.py
+//    scripts) uses delta^4 in every 2D setup and delta^5 only in 3D; the bond constant drops
+//    the same power from 3D to 2D (18 K/(pi eps^4) in 3D, 9 E/(pi eps^3) in 2D,
+//    peridem_bond_law.cpp).  Jha et al.'s PeriDEM code uses eps^5 in 2D (with a soft
+//    material, K = 0.0216 GPa), so their Table 2 needs p = 5 (KnForm::Eps5).
+enum class KnForm { Eps4, Eps5 };
+inline int kn_exponent(KnForm form)
 {
-  return 18.0 * bulk_modulus / (kContactPi * std::pow(horizon, 5));
+  return form == KnForm::Eps4 ? 4 : 5;
+}
+inline const char *kn_form_name(KnForm form)
+{
+  return form == KnForm::Eps4 ? "eps4" : "eps5";
+}
+// The default of a dimension: 2D per unit thickness (eps^4), 3D eps^5.
+inline KnForm default_kn_form(int dimension)
+{
+  return dimension == 2 ? KnForm::Eps4 : KnForm::Eps5;
+}
+inline double contact_stiffness(double bulk_modulus, double horizon, KnForm form)
+{
+  return 18.0 * bulk_modulus / (kContactPi * std::pow(horizon, kn_exponent(form)));
+}
+// The inverse: the bulk modulus k behind a given K_n.
+inline double bulk_modulus_from_stiffness(double Kn, double horizon, KnForm form)
+{
+  return Kn * kContactPi * std::pow(horizon, kn_exponent(form)) / 18.0;
 }
 
 // Harmonic mean 2ab/(a+b) ([BL] below eq. 4.1, [JDBL] eq. 24, 25); written as 2/(1/a + 1/b)
@@ -80,16 +108,16 @@ inline double reduced_mass(double m_i, double m_j)
 
 // K_n for two materials with bulk moduli k1, k2 and a common horizon: k_eff = harmonic mean
 // ([JDBL] eq. 25) inserted in eq. 36.
-inline double contact_stiffness(double k1, double k2, double horizon)
+inline double contact_stiffness(double k1, double k2, double horizon, KnForm form)
 {
-  return contact_stiffness(harmonic_mean(k1, k2), horizon);
+  return contact_stiffness(harmonic_mean(k1, k2), horizon, form);
 }
 
 // Unlike horizons (not in the seeds): harmonic mean of the two K_n; equals the above when
 // eps1 == eps2.
-inline double contact_stiffness_mixed(double k1, double eps1, double k2, double eps2)
+inline double contact_stiffness_mixed(double k1, double eps1, double k2, double eps2, KnForm form)
 {
-  return harmonic_mean(contact_stiffness(k1, eps1), contact_stiffness(k2, eps2));
+  return harmonic_mean(contact_stiffness(k1, eps1, form), contact_stiffness(k2, eps2, form));
 }
 
 // Damping ratio zeta that gives restitution eps_n for a linear spring-dashpot damped during
@@ -254,31 +282,41 @@ inline double grain_node_share(double node_volume, double grain_volume)
 // ---------------------------------------------------------------------------------------
 // Stable time step
 // ---------------------------------------------------------------------------------------
-// Gershgorin bound on the largest frequency of a node (velocity Verlet / central difference is
-// stable for dt < 2/omega_max, and (2/omega)(sqrt(1+zeta^2) - zeta) with damping ratio zeta):
-//  bonds:    omega_b^2 <= 2 sum_j c w(|xi_j|)/|xi_j| V_j / rho, which is Silling & Askari's
-//            dt_b = sqrt(2 rho / sum_j c w V_j/|xi_j|); the sum is approximated by the integral
-//            over the horizon: 2D  constant 2 pi eps c, conic pi eps c;
-//                              3D  constant 2 pi eps^2 c, conic (2/3) pi eps^2 c.
-//  contact:  n_c partners each a spring K_n V^2 (V the largest nodal volume) on the smallest
-//            nodal mass m: omega_c^2 <= 2 n_c K_n V^2/m; dt_c = sqrt(2 m/(n_c K_n V^2)) times
-//            the damping factor.  Default n_c: nodes of volume V in the contact ball,
-//            ceil(|B_Rc|/V), plus the wall equivalent ceil(k_wall/(K_n V^2)) with the wall
-//            stiffness at contact k_wall = 2 K_n V R_c^2 (2D) or pi K_n V R_c^3 (3D).
+// Bound on the largest frequency of the linearised system (velocity Verlet / central
+// difference is stable for dt < 2/omega_max, and (2/omega)(sqrt(1+zeta^2) - zeta) with damping
+// ratio zeta).  For springs k_b along unit vectors e_b (bonds: k_b = c w V_i V_j/|xi|, contact:
+// K_n V_i V_j) the Rayleigh quotient gives
+//   u.K u = sum_b k_b (e_b.(u_i - u_j))^2 <= 2 sum_i u_i.A_i u_i,  A_i = sum_{b at i} k_b e_b e_b,
+// so omega^2 <= 2 max_i lambda_max(A_i)/m_i.  A family symmetric under the lattice's 90-degree
+// rotations has an isotropic A_i = (sum k_b/d) 1, a d times tighter bound than Silling &
+// Askari's row sum (2 sum k_b/m_i), which assumes all bonds along one line:
+//  bonds:    given explicitly (bond_omega2 = max_i 2 lambda_max(A_i)/m_i over the actual bonds,
+//            what pair_style peridem/contact passes), or from the full-horizon integral
+//            (isotropic): omega_b^2 = (2/d) c I/rho with I = int_H w(r)/r dV:
+//            2D  constant 2 pi eps, conic pi eps;  3D  constant 2 pi eps^2, conic (2/3) pi eps^2.
+//  contact:  a node with partners in its whole contact ball (isotropic, ceil(|B_Rc|/V) springs
+//            K_n V^2, V the largest nodal volume) and a wall (normal only, the wall stiffness at
+//            contact k_wall = 2 K_n V R_c^2 (2D) or pi K_n V R_c^3 (3D) as ceil(k_wall/(K_n V^2))
+//            springs, only where there are walls): n_c = ceil(|B_Rc|/V)/d + ceil(k_wall/(K_n V^2))
+//            effective springs on the
+//            smallest nodal mass m: dt_c = sqrt(2 m/(n_c K_n V^2)) times the damping factor.
 //  combined: omega^2 <= omega_b^2 + omega_c^2  =>  dt = 1/sqrt(1/dt_b^2 + 1/dt_c^2);
 //            recommended = safety * dt.
+// Measured thresholds against this estimate: doc/pair_peridem_contact.rst (issue 10).
 struct TimeStepInput {
   int dimension = 3;
   double rho = 0.0; // density
   double c = 0.0;   // bond constant c (peridem_bond_law.h); 0: no bonds
   Micromodulus micromodulus = Micromodulus::Constant;
   double horizon = 0.0;
+  double bond_omega2 = 0.0;   // > 0: explicit max_i 2 lambda_max(A_i)/m_i of the bonds
   double node_volume = 0.0;   // largest nodal volume
   double min_node_mass = 0.0; // smallest nodal mass
   double Kn = 0.0;            // 0: no contact
   double Rc = 0.0;
   double damping_ratio = 0.0; // contact damping ratio (r_d, or zeta of eq. 23)
-  int n_contacts = 0;         // 0: default above
+  double n_contacts = 0.0;    // 0: default above
+  bool walls = true;          // default n_c: add the wall term (a fix peridem/wall exists)
   double safety = 0.8;
 };
 struct TimeStepEstimate {
@@ -286,9 +324,13 @@ struct TimeStepEstimate {
   double dt_contact = std::numeric_limits<double>::infinity();
   double dt_critical = std::numeric_limits<double>::infinity();    // combined
   double dt_recommended = std::numeric_limits<double>::infinity(); // safety * dt_critical
-  int n_contacts = 0;
+  double n_contacts = 0.0;
 };
 TimeStepEstimate stable_time_step(const TimeStepInput &in);
+
+// Largest eigenvalue of a symmetric 2x2 (dimension 2: a = xx, yy, xy) or 3x3 (a = xx, yy, zz,
+// xy, xz, yz) matrix, closed form.
+double symmetric_max_eigenvalue(const double *a, int dimension);
 
 // Silling-Askari bond bound from an explicit sum S = sum_j c w(|xi_j|) V_j/|xi_j| over the
 // bonds of the stiffest node: dt_b = sqrt(2 rho/S).

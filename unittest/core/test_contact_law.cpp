@@ -83,17 +83,46 @@ std::vector<ContactParams> all_variants()
 
 } // namespace
 
+TEST(ContactLaw, StiffnessForm2dPerUnitThickness)
+{
+  // 2D default 18 k/(pi eps^4): K_n (R_c - r) V_i V_j with areas V (m^2) is a force per unit
+  // thickness (N/m) only if K_n is in Pa/m^4; the eps^5 form is exactly 1/eps times stiffer.
+  EXPECT_EQ(default_kn_form(2), KnForm::Eps4);
+  EXPECT_EQ(default_kn_form(3), KnForm::Eps5);
+  const double k = 2.0e9, eps = 0.5e-3; // M2 of the grain-shape paper, its Sec. 7.3 horizon
+  EXPECT_NEAR(contact_stiffness(k, eps, KnForm::Eps4) / (18.0 * k / (M_PI * std::pow(eps, 4))), 1.0,
+              1e-14);
+  EXPECT_NEAR(contact_stiffness(k, eps, KnForm::Eps5) / contact_stiffness(k, eps, KnForm::Eps4),
+              1.0 / eps, 1e-9);
+  // units by scaling: lengths x 10 leave k (Pa) unchanged; a 2D force per thickness scales
+  // like stress x length (x 10) and K_n (R_c - r) V^2 scales like K_n x 10^5
+  const double F1 = contact_stiffness(k, eps, KnForm::Eps4) * 1.0;
+  const double F10 = contact_stiffness(k, 10 * eps, KnForm::Eps4) * std::pow(10.0, 5);
+  EXPECT_NEAR(F10 / F1, 10.0, 1e-9);
+  const double G10 = contact_stiffness(k, 10 * eps, KnForm::Eps5) * std::pow(10.0, 5);
+  EXPECT_NEAR(G10 / (contact_stiffness(k, eps, KnForm::Eps5)), 1.0, 1e-9); // not a force/length
+  // the inverse used for restitution damping with a given K_n
+  for (KnForm f : {KnForm::Eps4, KnForm::Eps5})
+    EXPECT_NEAR(bulk_modulus_from_stiffness(contact_stiffness(k, eps, f), eps, f) / k, 1.0, 1e-14);
+  EXPECT_STREQ(kn_form_name(KnForm::Eps4), "eps4");
+  EXPECT_STREQ(kn_form_name(KnForm::Eps5), "eps5");
+}
+
 TEST(ContactLaw, StiffnessFormula)
 {
   // K_n = 18 k/(pi eps^5) ([BL] eq. 4.1, [JDBL] eq. 36)
-  EXPECT_DOUBLE_EQ(contact_stiffness(2.0, 1.0), 36.0 / M_PI);
-  EXPECT_NEAR(contact_stiffness(2.0, 1.0), 11.459155902616464, 1e-12);
+  const KnForm p5 = KnForm::Eps5, p4 = KnForm::Eps4;
+  EXPECT_DOUBLE_EQ(contact_stiffness(2.0, 1.0, p5), 36.0 / M_PI);
+  EXPECT_NEAR(contact_stiffness(2.0, 1.0, p5), 11.459155902616464, 1e-12);
   const double k = 1.6e11, eps = 6.0e-4; // a steel-like grain, horizon 0.6 mm
-  EXPECT_NEAR(contact_stiffness(k, eps) / (18.0 * k / (M_PI * std::pow(eps, 5))), 1.0, 1e-14);
+  EXPECT_NEAR(contact_stiffness(k, eps, p5) / (18.0 * k / (M_PI * std::pow(eps, 5))), 1.0, 1e-14);
   // unlike materials: harmonic mean of the bulk moduli ([JDBL] eq. 25)
   EXPECT_DOUBLE_EQ(harmonic_mean(1.0, 3.0), 1.5);
-  EXPECT_DOUBLE_EQ(contact_stiffness(1.0, 3.0, 0.5), contact_stiffness(1.5, 0.5));
-  EXPECT_NEAR(contact_stiffness_mixed(1.0, 0.5, 3.0, 0.5), contact_stiffness(1.5, 0.5), 1e-9);
+  EXPECT_DOUBLE_EQ(contact_stiffness(1.0, 3.0, 0.5, p5), contact_stiffness(1.5, 0.5, p5));
+  EXPECT_NEAR(contact_stiffness_mixed(1.0, 0.5, 3.0, 0.5, p5), contact_stiffness(1.5, 0.5, p5),
+              1e-9);
+  EXPECT_NEAR(contact_stiffness_mixed(1.0, 0.5, 3.0, 0.5, p4), contact_stiffness(1.5, 0.5, p4),
+              1e-9);
   // rigid partner limits
   EXPECT_DOUBLE_EQ(harmonic_mean(2.0, kInf), 4.0);
   EXPECT_DOUBLE_EQ(reduced_mass(2.0, kInf), 2.0);
@@ -401,14 +430,19 @@ TEST(ContactLaw, StableTimeStep)
   in.c = 5.0e15;
   in.horizon = 6e-4;
   TimeStepEstimate t = stable_time_step(in);
-  EXPECT_NEAR(t.dt_bond, std::sqrt(2.0 * in.rho / (in.c * 2.0 * M_PI * in.horizon)), 1e-20);
+  // isotropic family: lambda_max of sum k e e = (1/d) sum k, so sqrt(d) x Silling-Askari
+  EXPECT_NEAR(t.dt_bond, std::sqrt(2.0 * 2.0 * in.rho / (in.c * 2.0 * M_PI * in.horizon)), 1e-20);
   EXPECT_DOUBLE_EQ(t.dt_critical, t.dt_bond); // no contact
   in.micromodulus = Micromodulus::Conic;
   EXPECT_NEAR(stable_time_step(in).dt_bond, t.dt_bond * std::sqrt(2.0), 1e-20);
   in.dimension = 3;
   in.micromodulus = Micromodulus::Constant;
   EXPECT_NEAR(stable_time_step(in).dt_bond,
-              std::sqrt(2.0 * in.rho / (in.c * 2.0 * M_PI * in.horizon * in.horizon)), 1e-20);
+              std::sqrt(3.0 * 2.0 * in.rho / (in.c * 2.0 * M_PI * in.horizon * in.horizon)), 1e-20);
+  // explicit bond bound omega_b^2 (what the pair style computes from the bonds) wins
+  in.bond_omega2 = 4.0e14;
+  EXPECT_DOUBLE_EQ(stable_time_step(in).dt_bond, 1.0e-7);
+  in.bond_omega2 = 0.0;
 
   // contact only: dt_c = sqrt(2 m/(n K_n V^2))
   TimeStepInput c;
@@ -418,9 +452,13 @@ TEST(ContactLaw, StableTimeStep)
   c.node_volume = 1e-8; // h = 1e-4
   c.min_node_mass = 1.2e-5;
   t = stable_time_step(c);
-  // ceil(pi Rc^2/V) + ceil(2 Rc^2/V) = ceil(2.835) + ceil(1.805) = 5
-  EXPECT_EQ(t.n_contacts, 5);
-  EXPECT_NEAR(t.dt_contact, std::sqrt(2.0 * 1.2e-5 / (5 * 1e20 * 1e-16)), 1e-20);
+  // ceil(pi Rc^2/V)/d + ceil(2 Rc^2/V) = ceil(2.835)/2 + ceil(1.805) = 3.5 (ball isotropic,
+  // wall along its normal)
+  EXPECT_DOUBLE_EQ(t.n_contacts, 3.5);
+  EXPECT_NEAR(t.dt_contact, std::sqrt(2.0 * 1.2e-5 / (3.5 * 1e20 * 1e-16)), 1e-20);
+  c.walls = false; // no wall: the ball alone
+  EXPECT_DOUBLE_EQ(stable_time_step(c).n_contacts, 1.5);
+  c.walls = true;
   c.damping_ratio = 0.5;
   EXPECT_LT(stable_time_step(c).dt_contact, t.dt_contact);
   // combined: 1/dt^2 adds up, safety factor applied
@@ -433,6 +471,30 @@ TEST(ContactLaw, StableTimeStep)
               1.0 / (both.dt_bond * both.dt_bond) + 1.0 / (both.dt_contact * both.dt_contact),
               1e-9 / (both.dt_critical * both.dt_critical));
   EXPECT_DOUBLE_EQ(both.dt_recommended, 0.8 * both.dt_critical);
+}
+
+TEST(ContactLaw, SymmetricMaxEigenvalue)
+{
+  const double a2[3] = {2.0, 1.0, 0.0};
+  EXPECT_DOUBLE_EQ(symmetric_max_eigenvalue(a2, 2), 2.0);
+  const double b2[3] = {1.0, 1.0, 1.0}; // [[1,1],[1,1]]: 2, 0
+  EXPECT_NEAR(symmetric_max_eigenvalue(b2, 2), 2.0, 1e-15);
+  const double a3[6] = {1.0, 2.0, 3.0, 0.0, 0.0, 0.0};
+  EXPECT_DOUBLE_EQ(symmetric_max_eigenvalue(a3, 3), 3.0);
+  const double b3[6] = {2.0, 2.0, 2.0, 1.0, 1.0, 1.0}; // 1 + J(3x3 ones): 4, 1, 1
+  EXPECT_NEAR(symmetric_max_eigenvalue(b3, 3), 4.0, 1e-12);
+  const double c3[6] = {2.0, 3.0, 5.0, 1.0, 0.0, 0.0}; // blocks [[2,1],[1,3]] and 5
+  EXPECT_NEAR(symmetric_max_eigenvalue(c3, 3), 5.0, 1e-12);
+  // a square-lattice family (4-fold symmetric) is isotropic: lambda_max = sum k/2
+  double A[3] = {0.0, 0.0, 0.0}, sum = 0.0;
+  for (int i = -3; i <= 3; ++i)
+    for (int j = -3; j <= 3; ++j) {
+      const double r = std::hypot(i, j);
+      if (r == 0.0 || r > 3.0) continue;
+      const double k = 1.0 / r, ex = i / r, ey = j / r;
+      A[0] += k * ex * ex, A[1] += k * ey * ey, A[2] += k * ex * ey, sum += k;
+    }
+  EXPECT_NEAR(symmetric_max_eigenvalue(A, 2), 0.5 * sum, 1e-12);
 }
 
 TEST(ContactLaw, StableTimeStepIsStableForContactSpring)
@@ -468,7 +530,7 @@ TEST(ContactLaw, StableTimeStepIsStableForContactSpring)
   c.Rc = 0.5;
   c.node_volume = V;
   c.min_node_mass = m;
-  c.n_contacts = 2;
+  c.n_contacts = 2.0;
   const double dtc = stable_time_step(c).dt_contact;
   EXPECT_FALSE(grows(0.99 * dtc));
   EXPECT_TRUE(grows(1.2 * dtc));

@@ -287,3 +287,34 @@ TEST(Material, BadFilesGiveClearErrors)
     EXPECT_CONTAINS(e.what(), "cannot open material file '/nonexistent/dir/none.peridem'");
   }
 }
+
+// Files named after their paper and table (issue 10): the grain-shape paper's Table 2 and the
+// PeriDEM paper's Table 1, each with its M1 and M2; the old one-material files agree.
+TEST(Material, ReadsPaperTableFiles)
+{
+  const auto gs = read_material_file(potential("grain_shape_2023_table2.peridem"));
+  ASSERT_EQ(gs.materials.size(), 2u);
+  const Material &m1 = gs.get("M1"), &m2 = gs.get("M2");
+  // [BL] Table 2: M1 E 191 GPa, k 159.2 GPa, rho 8000; M2 E 1.23 GPa, k 2 GPa, rho 1200
+  EXPECT_DOUBLE_EQ(m1.elastic.E, 191e9);
+  EXPECT_DOUBLE_EQ(m1.elastic.K, 159.2e9);
+  EXPECT_DOUBLE_EQ(m1.density, 8000.0);
+  EXPECT_NEAR(m1.elastic.nu, (3 * 159.2 - 191) / (6 * 159.2), 1e-12); // implied, 0.300
+  EXPECT_DOUBLE_EQ(m2.elastic.E, 1.23e9);
+  EXPECT_DOUBLE_EQ(m2.elastic.K, 2e9);
+  EXPECT_DOUBLE_EQ(m2.density, 1200.0);
+  EXPECT_NEAR(m2.elastic.nu, (6.0 - 1.23) / 12.0, 1e-12); // implied, 0.3975
+  EXPECT_DOUBLE_EQ(m2.horizon, 0.5e-3);                   // [BL] Sec. 7.3
+  const auto pd = read_material_file(potential("peridem_2021_table1.peridem"));
+  const auto old1 = read_material_file(potential("peridem_M1.peridem"));
+  const auto old2 = read_material_file(potential("pmma_M2.peridem"));
+  for (const auto &[name, old] : {std::make_pair("M1", &old1), std::make_pair("M2", &old2)}) {
+    const Material &a = pd.get(name), &b = old->get(name);
+    EXPECT_DOUBLE_EQ(a.density, b.density);
+    EXPECT_DOUBLE_EQ(a.elastic.K, b.elastic.K);
+    EXPECT_DOUBLE_EQ(a.elastic.G, b.elastic.G);
+    EXPECT_DOUBLE_EQ(a.G_c, b.G_c);
+    EXPECT_DOUBLE_EQ(a.horizon, b.horizon);
+    EXPECT_EQ(a.micromodulus, b.micromodulus);
+  }
+}

@@ -51,7 +51,7 @@ peridem_wall_error(periodic_3d "ylo 0.0 zhi 0.4 Kn 1 Rc 0.5"
   -var dim 3 -var bnd "f f p")
 # a node completely past a wall (by more than Rc) ends the run by default
 peridem_add_error_test(wall_lost_node ${_in}/wall_error.in
-  "atom 1 is 1.5 beyond wall yhi \\(more than Rc = 0.5\\): it crossed the wall"
+  "1 nodes lie more than Rc = 0.5 beyond a wall at the first step \\(e.g. grain 1 / wall yhi\\): a wall placed through a grain"
   -var wall "ylo -1 yhi -0.5 Kn 1 Rc 0.5" -var nsteps 0)
 
 # Rc larger than the horizon: a warning (doc/fix_peridem_wall.rst), the run goes on
