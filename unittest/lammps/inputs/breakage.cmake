@@ -35,8 +35,26 @@ foreach(_np 1 2)
             $<TARGET_FILE:lmp_peridem> -in escape.in -log none -echo none
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
+# ... and through a lid the strip is fast enough to cross (yhi at 1.0: deleted
+# at steps 90-100 once wholly beyond it, before it would reach the box edge)
+add_test(NAME escaped_nodes_beyond_wall_deleted
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh $<TARGET_FILE:lmp_peridem> -in escape.in -log none
+          -echo none -var top "yhi 1.0"
+  WORKING_DIRECTORY ${_in}/breakage)
 add_test(NAME error.escaped_node_named
   COMMAND ${PERIDEM_RUN}/expect_error.sh
           "atom [0-9]+ of grain 1 left the simulation box through yhi at .*lost delete"
           $<TARGET_FILE:lmp_peridem> -in escape.in -log none -echo none -var lost warn
+  WORKING_DIRECTORY ${_in}/breakage)
+# reading it back wrongly: LAMMPS names the section; a wrong property kind is named
+add_test(NAME error.data_file_damage_without_fix
+  COMMAND ${PERIDEM_RUN}/expect_error.sh "Unknown identifier in data file: PeridemDamage"
+          $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen
+          -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_nofix -var readfix ""
+  WORKING_DIRECTORY ${_in}/breakage)
+add_test(NAME error.data_file_damage_integer_property
+  COMMAND ${PERIDEM_RUN}/expect_error.sh "per-atom property peridem_nbroken must be a d_ vector"
+          $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen
+          -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_int
+          -var props "i_peridem_nbroken d_peridem_zbroken"
   WORKING_DIRECTORY ${_in}/breakage)
