@@ -140,7 +140,9 @@ void ComputePeridemBed::find_holes()
 void ComputePeridemBed::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  if (!holes_ready) find_holes();
+  // grains added since the holes were found (create_peridem_grains between
+  // runs) need their holes, and rows in the per-grain sums
+  if (!holes_ready || PERIDEM::max_grain_id(lmp) != tagint(holes.size()) - 1) find_holes();
   const int vd = domain->dimension == 2 ? 1 : 2; // vertical: y in 2d, z in 3d
   const int nlat = domain->dimension == 2 ? 1 : 2;
   double **x = atom->x;

@@ -57,6 +57,11 @@ TEST_F(ComputePeridemBed, HeightAndVolumeFractionOfSquares)
   EXPECT_NEAR(value("bmax", PHI), 4 * VSQ / (6 * 2.3), 1e-12);
   EXPECT_NEAR(value("breg", PHI), 4 * VSQ / (6 * 8.0), 1e-12);
   EXPECT_NEAR(value("bvar", PHI), 4 * VSQ / (6 * 5.0), 1e-12);
+
+  // a grain added between runs counts
+  command("create_peridem_grains 1 square side 1 spacing 0.1 horizon 0.3 density 1 at 1 1.8 0\n"
+          "run 0 post no");
+  EXPECT_NEAR(value("breg", VGRAIN), 5 * VSQ, 1e-12);
 }
 
 TEST_F(ComputePeridemBed, RingVolumeWithHoleIsTheOuterDisk)

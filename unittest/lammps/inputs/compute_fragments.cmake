@@ -65,3 +65,9 @@ peridem_add_error_test(bed_unbounded_region ${_fbox}
   -var before "region r plane 0 0 0 0 1 0" -var compute "peridem/bed r")
 peridem_add_error_test(bed_atom_style ${_in}/fragments/atomic.in
   "compute peridem/bed requires atom style peridem" -var compute "peridem/bed r")
+
+# python/peridem_post.py: crack angle of synthetic bands to 0.5 degree,
+# readers, plots (Debian's python3 has numpy and, if installed, matplotlib)
+find_program(PERIDEM_POST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
+add_test(NAME python.peridem_post
+  COMMAND ${PERIDEM_POST_PYTHON} ${PERIDEM_RUN}/test_post.py)
