@@ -196,7 +196,8 @@ struct CreatePeridemGrains::Options {
   std::string file;                     // polygon file or mesh
   std::string boundary;                 // polygon that prunes the bonds of a mesh
   std::vector<std::array<double, 3>> at;
-  // bed files (create_peridem_bed): per-position radius and angle (degrees), NaN if absent
+  // bed files (create_peridem_bed): per-position radius and angle (radians); empty unless
+  // the positions file has those columns
   std::vector<double> at_radius, at_angle;
   std::string label; // keep only the positions-file lines with this label
   std::vector<std::string> labels_of_lines;

@@ -194,14 +194,12 @@ struct Minimiser {
   int max_iterations;
 
   // x: positions in, jammed positions out (original order); returns iterations
-  template <int D>
-  int run(std::vector<std::array<double, 3>> &xin, const std::vector<double> &ain,
-          const std::vector<double> &rin)
+  template <int D> int run(std::vector<std::array<double, 3>> &xin, const std::vector<double> &ain)
   {
     constexpr int top = D - 1;
     const std::size_t N = xin.size();
     // working arrays, reordered by cell at each list build for locality
-    std::vector<double> x(D * N), v(D * N, 0.0), f(D * N), xb(D * N), a(ain), rr(rin);
+    std::vector<double> x(D * N), v(D * N, 0.0), f(D * N, 0.0), xb(D * N), a(ain);
     std::vector<std::size_t> id(N);
     for (std::size_t i = 0; i < N; i++) {
       id[i] = i;
@@ -234,7 +232,6 @@ struct Minimiser {
       permute(x, D, order);
       permute(v, D, order);
       permute(a, 1, order);
-      permute(rr, 1, order);
       std::vector<std::size_t> nid(N);
       for (std::size_t k = 0; k < N; k++) nid[k] = id[order[k]];
       id.swap(nid);
@@ -256,11 +253,12 @@ struct Minimiser {
       strain = 1.0;
     };
 
-    // forces and vertical virial stress; returns the largest overlap ratio
-    // (overlap of the a_i over alpha r; > 1 means the true disks overlap)
-    double Pint = 0.0;
+    // forces (f must be zero on entry: the update loop clears it), vertical
+    // virial stress and the FIRE sums in two passes; returns the largest
+    // overlap ratio (overlap of the a_i over alpha r; > 1: the true disks overlap)
+    double Pint = 0.0, fmax2 = 0.0, power = 0.0, vnorm2 = 0.0, fnorm2 = 0.0;
+    const double inv_alpha = (1.0 + alpha) / alpha; // r = a / (1 + alpha)
     auto forces = [&]() {
-      std::fill(f.begin(), f.end(), 0.0);
       double virial = 0.0, worst = 0.0;
       for (std::size_t p = 0; p < pairs.size(); p += 2) {
         const std::size_t i = pairs[p], j = pairs[p + 1];
@@ -277,25 +275,31 @@ struct Minimiser {
           f[D * j + d] += k * dx[d];
         }
         virial += k * dx[top] * dx[top];
-        worst = std::max(worst, delta / (alpha * (rr[i] + rr[j])));
+        worst = std::max(worst, delta / sum);
       }
+      fmax2 = power = vnorm2 = fnorm2 = 0.0;
       for (std::size_t i = 0; i < N; i++)
         for (int d = 0; d < D; d++) {
-          const double l = lo[d], h = d == top ? H : hi[d], xi = x[D * i + d];
+          const std::size_t k = D * i + d;
+          const double l = lo[d], h = d == top ? H : hi[d], xi = x[k];
           const double dl = a[i] - (xi - l), dh = a[i] - (h - xi);
           if (dl > 0.0) {
-            f[D * i + d] += dl;
+            f[k] += dl;
             if (d == top) virial += dl * (xi - l);
-            worst = std::max(worst, dl / (alpha * rr[i]));
+            worst = std::max(worst, dl / a[i]);
           }
           if (dh > 0.0) {
-            f[D * i + d] -= dh;
+            f[k] -= dh;
             if (d == top) virial += dh * (h - xi);
-            worst = std::max(worst, dh / (alpha * rr[i]));
+            worst = std::max(worst, dh / a[i]);
           }
+          fmax2 = std::max(fmax2, f[k] * f[k]);
+          power += f[k] * v[k];
+          vnorm2 += v[k] * v[k];
+          fnorm2 += f[k] * f[k];
         }
       Pint = virial / (area * H);
-      return worst;
+      return worst * inv_alpha;
     };
 
     // FIRE parameters of Bitzek et al. (2006); unit masses, stiffness 1
@@ -313,13 +317,6 @@ struct Minimiser {
     int it = 0;
     for (; it < max_iterations; it++) {
       const double worst = forces();
-      double fmax2 = 0.0, power = 0.0, vnorm2 = 0.0, fnorm2 = 0.0;
-      for (std::size_t k = 0; k < D * N; k++) {
-        fmax2 = std::max(fmax2, f[k] * f[k]);
-        power += f[k] * v[k];
-        vnorm2 += v[k] * v[k];
-        fnorm2 += f[k] * f[k];
-      }
       // convergence of the current stage
       const double fscale = (D == 2 ? 2.0 : 4.0) * Ptarget; // mean contact force ~ P d^(D-1)
       if (std::sqrt(fmax2) < 0.1 * fscale && std::fabs(Pint - Ptarget) < 0.05 * Ptarget) {
@@ -354,6 +351,7 @@ struct Minimiser {
         for (int d = 0; d < D; d++) {
           const std::size_t k = D * i + d;
           v[k] = keep * v[k] + mix * f[k] + f[k] * dt;
+          f[k] = 0.0;
           x[k] += v[k] * dt;
           if (d == top) {
             x[k] *= 1.0 + eps;
@@ -421,11 +419,8 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
   // scaled units: lengths / mean radius, floor at 0
   const std::size_t N = radii.size();
   const double L = rsum / N;
-  std::vector<double> a(N), rr(N);
-  for (std::size_t i = 0; i < N; i++) {
-    rr[i] = radii[i] / L;
-    a[i] = rr[i] * (1.0 + alpha);
-  }
+  std::vector<double> a(N);
+  for (std::size_t i = 0; i < N; i++) a[i] = radii[i] / L * (1.0 + alpha);
   const double amax = rmax / L * (1.0 + alpha);
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (int d = 0; d < D; d++) {
@@ -461,7 +456,7 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
   m.amax = amax;
   m.area = area;
   m.max_iterations = opt.max_iterations;
-  const int it = D == 2 ? m.run<2>(x0, a, rr) : m.run<3>(x0, a, rr);
+  const int it = D == 2 ? m.run<2>(x0, a) : m.run<3>(x0, a);
   H = m.H;
   const auto &x = x0;
   if (it >= opt.max_iterations)
