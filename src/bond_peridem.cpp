@@ -10,6 +10,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
+#include "lmp_peridem_restart.h"
 #include "lmp_peridem_bond_loop.h"
 #include "lmp_peridem_image.h"
 #include "error.h"
@@ -530,6 +531,7 @@ double BondPeridem::equilibrium_distance(int i)
 // break_order, ...) were lost in a restart
 void BondPeridem::write_restart(FILE *fp)
 {
+  PERIDEM::write_restart_tag(fp, PERIDEM::RESTART_BOND_PERIDEM);
   write_restart_settings(fp);
   const int n = atom->nbondtypes;
   for (double *a : {c, s0, horizon, spacing}) fwrite(&a[1], sizeof(double), n, fp);
@@ -539,6 +541,7 @@ void BondPeridem::write_restart(FILE *fp)
 
 void BondPeridem::read_restart(FILE *fp)
 {
+  PERIDEM::check_restart_tag(lmp, fp, PERIDEM::RESTART_BOND_PERIDEM, "bond_style peridem");
   read_restart_settings(fp);
   allocate();
   const int n = atom->nbondtypes;

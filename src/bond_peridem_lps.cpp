@@ -19,6 +19,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
+#include "lmp_peridem_restart.h"
 #include "lmp_peridem_bond_loop.h"
 #include "force.h"
 #include "memory.h"
@@ -365,6 +366,7 @@ void BondPeridemLPS::init_style()
 
 void BondPeridemLPS::write_restart(FILE *fp)
 {
+  PERIDEM::write_restart_tag(fp, PERIDEM::RESTART_BOND_PERIDEM_LPS);
   write_restart_settings(fp); // see BondPeridem::write_restart
   const int n = atom->nbondtypes;
   for (double *arr : {bulk, shear, s0, horizon, spacing}) fwrite(&arr[1], sizeof(double), n, fp);
@@ -374,6 +376,7 @@ void BondPeridemLPS::write_restart(FILE *fp)
 
 void BondPeridemLPS::read_restart(FILE *fp)
 {
+  PERIDEM::check_restart_tag(lmp, fp, PERIDEM::RESTART_BOND_PERIDEM_LPS, "bond_style peridem/lps");
   read_restart_settings(fp);
   allocate_lps();
   const int n = atom->nbondtypes;

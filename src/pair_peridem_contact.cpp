@@ -17,6 +17,7 @@
 #include "bond.h"
 #include "comm.h"
 #include "domain.h"
+#include "lmp_peridem_restart.h"
 #include "lmp_peridem_image.h"
 #include "error.h"
 #include "force.h"
@@ -730,6 +731,7 @@ std::vector<double> PairPeridemContact::bond_omega2_of_types()
 
 void PairPeridemContact::write_restart(FILE *fp)
 {
+  PERIDEM::write_restart_tag(fp, PERIDEM::RESTART_PAIR_CONTACT);
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -746,6 +748,7 @@ void PairPeridemContact::write_restart(FILE *fp)
 
 void PairPeridemContact::read_restart(FILE *fp)
 {
+  PERIDEM::check_restart_tag(lmp, fp, PERIDEM::RESTART_PAIR_CONTACT, "pair_style peridem/contact");
   read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++)
