@@ -53,6 +53,10 @@ class BondPeridem : public Bond {
   // per bond type, index 1..nbondtypes (flat arrays for the force loop)
   double *c, *s0, *horizon, *spacing;
   int *conic, *breakable;
+  // the stretch at which a bond of the type breaks: s0, or infinity for
+  // break no (set in init_style), so the force loop has no extra per-bond
+  // test (measured: a breakable[type] test cost 5 % of the loop)
+  double *s0_break;
 
   // the keywords of one bond_coeff command, as given, for this style and peridem/lps
   struct CoeffArgs {
