@@ -80,6 +80,12 @@ void FixPeridemBonds::init()
   for (int i = 0; i < atom->nlocal && !any; i++) any = nbroken[i] > 0.0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
   wd_section = any_all;
+  // bond_style peridem/lps keeps m of the reference configuration: a data
+  // file must carry it, or m would be recomputed over the surviving bonds
+  any = 0;
+  for (int i = 0; i < atom->nlocal && !any; i++) any = wvolume[i] > 0.0;
+  MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
+  wd_wvolume = any_all;
   escapes_deleted = 0;
   for (int f = 0; f < modify->nfix; f++) {
     auto *wall = dynamic_cast<FixPeridemWall *>(modify->fix[f]);
@@ -445,6 +451,16 @@ void FixPeridemBonds::adopt_data_file_damage()
     zbroken[i] = zb[i];
     here += static_cast<bigint>(nb[i]);
   }
+  // the weighted volume m of bond_style peridem/lps (written when that
+  // style computed it): the LPS style keeps a positive m and computes the
+  // others
+  const int im = atom->find_custom("peridem_wvolume", flag, cols);
+  if (im >= 0) {
+    if (flag != 1 || cols != 0)
+      error->all(FLERR, "fix {}: per-atom property peridem_wvolume must be a d_ vector", ID);
+    const double *m = atom->dvector[im];
+    for (int i = 0; i < atom->nlocal; i++) wvolume[i] = m[i] > 0.0 ? m[i] : -1.0;
+  }
   MPI_Allreduce(&here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0)
     utils::logmesg(lmp,
@@ -456,7 +472,7 @@ void FixPeridemBonds::adopt_data_file_damage()
 void FixPeridemBonds::write_data_section_size(int, int &nx, int &ny)
 {
   nx = atom->nlocal;
-  ny = 3;
+  ny = wd_wvolume ? 4 : 3;
 }
 
 void FixPeridemBonds::write_data_section_pack(int, double **buf)
@@ -465,22 +481,29 @@ void FixPeridemBonds::write_data_section_pack(int, double **buf)
     buf[i][0] = ubuf(atom->tag[i]).d;
     buf[i][1] = nbroken[i];
     buf[i][2] = zbroken[i];
+    if (wd_wvolume) buf[i][3] = wvolume[i];
   }
 }
 
 void FixPeridemBonds::write_data_section_keyword(int, FILE *fp)
 {
   // the column hint names the property/atom vectors that read it back
-  fmt::print(fp, "\n{} # d_peridem_nbroken d_peridem_zbroken\n\n", DATA_SECTION);
+  const char *props = wd_wvolume ? "d_peridem_nbroken d_peridem_zbroken d_peridem_wvolume"
+                                 : "d_peridem_nbroken d_peridem_zbroken";
+  fmt::print(fp, "\n{} # {}\n\n", DATA_SECTION, props);
   utils::logmesg(lmp,
-                 "fix {}: the data file has a {} section (broken bonds per node); read it "
-                 "back with\n  fix damage all property/atom d_peridem_nbroken d_peridem_zbroken\n"
+                 "fix {}: the data file has a {} section (broken bonds per node{}); read it "
+                 "back with\n  fix damage all property/atom {}\n"
                  "  read_data FILE fix damage NULL {}\n",
-                 ID, DATA_SECTION, DATA_SECTION);
+                 ID, DATA_SECTION, wd_wvolume ? ", weighted volume m" : "", props, DATA_SECTION);
 }
 
 void FixPeridemBonds::write_data_section(int, FILE *fp, int n, double **buf, int)
 {
   for (int i = 0; i < n; i++)
-    fmt::print(fp, "{} {} {:.17g}\n", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2]);
+    if (wd_wvolume)
+      fmt::print(fp, "{} {} {:.17g} {:.17g}\n", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2],
+                 buf[i][3]);
+    else
+      fmt::print(fp, "{} {} {:.17g}\n", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2]);
 }

@@ -95,6 +95,7 @@ class FixPeridemBonds : public Fix {
   std::unordered_map<int, std::vector<tagint>> lost_partners;
   int comm_mode;           // which reverse communication is under way
   int escapes_deleted;     // a fix peridem/wall deletes nodes leaving the box
+  int wd_wvolume = 0;      // the damage section also carries the LPS weighted volume m
   double *wvolume;         // LPS weighted volume m (reference), < 0 until computed
   double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()
 

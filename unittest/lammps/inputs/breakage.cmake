@@ -14,6 +14,14 @@ foreach(_case "2;3;1000;200" "3;6;600;150")
             -var split ${_split}
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
+# state-based grains: the section carries the weighted volume m too
+foreach(_np 1 2)
+  add_test(NAME data_file_keeps_lps_weighted_volume_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np}
+            $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo none -var lps 1
+            -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_lps_np${_np}
+    WORKING_DIRECTORY ${_in}/breakage)
+endforeach()
 
 # write_data + read_data keep the broken count and Z per node (issue 9,
 # item 3; before: 0 of 220 broken bonds read back), on 1 and 2 ranks
