@@ -3,7 +3,7 @@
 // of width sqrt(N) mean diameters (a square-ish bed), one core. Prints N, the
 // median wall and CPU time of `repeats` runs, iterations, packing fraction, rattlers.
 // Not a unit test; build by hand from the repo root:
-//   g++ -O2 -std=c++17 -Isrc bench/packing/bench_packing.cpp
+//   g++ -O3 -std=c++17 -Isrc bench/packing/bench_packing.cpp
 //       src/peridem_geometry_packing.cpp -o /tmp/bench_packing
 //   /tmp/bench_packing 1500 5000 20000 100000
 #include "peridem_geometry_packing.h"
