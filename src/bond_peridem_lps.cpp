@@ -188,8 +188,8 @@ void BondPeridemLPS::compute(int eflag, int vflag)
       const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
       const double e = r - bc[n].r0;
       // a bond that breaks now takes no part in this step (default order)
-      if (!break_after_force && break_flag && breakable[type] &&
-          peridem::bond_breaks(e / bc[n].r0, s0[type], breakage)) {
+      if (!break_after_force && break_flag &&
+          peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage)) {
         break_bond(n, i1, i2, bc[n].r0, s0[type]);
         continue;
       }
@@ -246,8 +246,8 @@ void BondPeridemLPS::compute(int eflag, int vflag)
                                          inv_m[i1], inv_m[i2]);
       ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
     }
-    if (break_after_force && break_flag && breakable[type] &&
-        peridem::bond_breaks(e / bc[n].r0, s0[type], breakage))
+    if (break_after_force && break_flag &&
+        peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage))
       break_bond(n, i1, i2, bc[n].r0, s0[type]);
   }
 }
