@@ -7,20 +7,25 @@
 # Idempotent: a second run changes nothing. Meant to be run on a merged tree and
 # committed alone ("MECHANICAL: ..."), so that it can be dropped and re-run after merges.
 set -euo pipefail
-root="$(cd "${1:-$(dirname "${BASH_SOURCE[0]}")/../..}" && pwd)"
-dev="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-list="$(mktemp)"
-python3 "$dev/rename_namespace.py" "$root" >"$list"
-python3 "$dev/snake_case_core.py" "$root" >>"$list"
-mapfile -t renamed < <(sort -u "$list")
-rm -f "$list"
-cxx=()
-for f in "${renamed[@]}"; do
-  case "$f" in *.cpp | *.h) cxx+=("$root/$f") ;; esac
-done
-if [ ${#cxx[@]} -gt 0 ]; then
-  (cd "$root" && clang-format -i "${cxx[@]}")
-fi
-echo "namespace and core names renamed in ${#renamed[@]} files"
-python3 "$dev/license_headers.py" "$root"
-python3 "$dev/license_headers.py" --check "$root"
+# everything in main(): step 1 also puts the header into this very file, which bash would
+# otherwise go on reading from a shifted offset
+main() {
+  root="$(cd "${1:-$(dirname "${BASH_SOURCE[0]}")/../..}" && pwd)"
+  dev="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+  list="$(mktemp)"
+  python3 "$dev/rename_namespace.py" "$root" >"$list"
+  python3 "$dev/snake_case_core.py" "$root" >>"$list"
+  mapfile -t renamed < <(sort -u "$list")
+  rm -f "$list"
+  cxx=()
+  for f in "${renamed[@]}"; do
+    case "$f" in *.cpp | *.h) cxx+=("$root/$f") ;; esac
+  done
+  if [ ${#cxx[@]} -gt 0 ]; then
+    (cd "$root" && clang-format -i "${cxx[@]}")
+  fi
+  echo "namespace and core names renamed in ${#renamed[@]} files"
+  python3 "$dev/license_headers.py" "$root"
+  python3 "$dev/license_headers.py" --check "$root"
+}
+main "$@"; exit $?
