@@ -250,13 +250,19 @@ void CreatePeridemBed::command(int narg, char **arg)
                 p.centre[i][2], p.radius[i] - rc / 2, angle, labels[l].c_str());
       }
       fclose(out);
-      snprintf(line, sizeof(line),
-               "Created a bed of %lld %s %s in %s: bed height %.6g (container %.6g), "
-               "packing fraction %.4f of security %s (%.4f after shrinking by R_c/2 = %g), "
-               "%zu rattlers (%zu before growth), %d iterations\n",
-               count, kind, dim == 2 ? "disks" : "spheres", file.c_str(), bed[top][1] - bed[top][0],
-               hi[top] - lo[top], p.fraction, dim == 2 ? "disks" : "spheres", vgrain / vbed, rc / 2,
-               g.after, g.before, p.iterations);
+      if (rows)
+        snprintf(line, sizeof(line),
+                 "Created a bed of %lld perturbed-row disks in %s: packing fraction %.4f of the "
+                 "container (%.4f after shrinking by R_c/2 = %g)\n",
+                 count, file.c_str(), p.fraction, vgrain / vbed, rc / 2);
+      else
+        snprintf(line, sizeof(line),
+                 "Created a bed of %lld jammed %s in %s: bed height %.6g (container %.6g), "
+                 "packing fraction %.4f of security %s (%.4f after shrinking by R_c/2 = %g), "
+                 "%zu rattlers (%zu before growth), %d iterations\n",
+                 count, dim == 2 ? "disks" : "spheres", file.c_str(), bed[top][1] - bed[top][0],
+                 hi[top] - lo[top], p.fraction, dim == 2 ? "disks" : "spheres", vgrain / vbed,
+                 rc / 2, g.after, g.before, p.iterations);
     } catch (peridem::GeometryError &e) {
       message = e.what();
     }
