@@ -3,10 +3,12 @@
 ------------------------------------------------------------------------- */
 
 #include "create_peridem_bed.h"
+#include "lmp_peridem_citations.h"
 
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "math_const.h"
 
 #include "peridem_geometry_packing.h"
 
@@ -16,12 +18,16 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 
 namespace {
 constexpr const char *CMD = "create_peridem_bed";
 }
 
-CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp) {}
+CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp)
+{
+  PERIDEM::cite_grain_shape(lmp);
+}
 
 /* ----------------------------------------------------------------------
    create_peridem_bed FILE count N radius STYLE args seed S keyword value ...
@@ -40,7 +46,7 @@ void CreatePeridemBed::command(int narg, char **arg)
   peridem::RadiusDistribution dist;
   double rc = 0.0, tolerance = 1e-3;
   bool grow = true;  // rattlers grow (default) or keep
-  bool rows = false; // layout rows: the PeriDEM paper's perturbed rows (§4.4)
+  bool rows = false; // layout rows: Jha et al.'s (2021) perturbed rows (§4.4)
   double gap = 0.0, perturb = 0.1;
   double lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
@@ -161,7 +167,8 @@ void CreatePeridemBed::command(int narg, char **arg)
                                      "R_c/2 (radius " +
                                      std::to_string(dist.smallest()) + ")");
       // jam the security disks in the container inset by R_c/2: after shrinking them by
-      // R_c/2 the grains are >= R_c from each other and from the walls (seed §7.1 step 5)
+      // R_c/2 the grains are >= R_c from each other and from the walls (Bhattacharya & Lipton 2023,
+      // §7.1 step 5)
       peridem::PackingOptions opt;
       opt.dimension = dim;
       for (int k = 0; k < 3; k++) {
@@ -172,7 +179,7 @@ void CreatePeridemBed::command(int narg, char **arg)
       opt.tolerance = tolerance;
       peridem::Packing p;
       if (rows) {
-        // the PeriDEM paper's §4.4 bed: perturbed rows, loose (settles under gravity)
+        // Jha et al. (2021) §4.4: perturbed rows, loose (settles under gravity)
         peridem::RowOptions ro;
         for (int k = 0; k < 3; k++) {
           ro.lo[k] = opt.lo[k];
@@ -201,8 +208,8 @@ void CreatePeridemBed::command(int narg, char **arg)
       const double fraction0 = p.fraction;
       peridem::RattlerGrowth g;
       if (grow) {
-        // seed §7.1 step 4: each rattler takes the largest disk its cage holds,
-        // capped at the distribution's upper bound
+        // Bhattacharya & Lipton (2023) §7.1 step 4: each rattler takes the largest disk its cage
+        // holds, capped at the distribution's upper bound
         g = peridem::growRattlers(p, dist.largest(), tolerance);
       } else if (!rows) {
         const auto rep = peridem::jammingReport(p, tolerance);
@@ -223,7 +230,7 @@ void CreatePeridemBed::command(int narg, char **arg)
       for (int k = 0; k < dim; k++) vbed *= bed[k][1] - bed[k][0];
       for (double r : p.radius) {
         const double s = r - rc / 2;
-        vgrain += dim == 2 ? M_PI * s * s : 4.0 / 3.0 * M_PI * s * s * s;
+        vgrain += dim == 2 ? MY_PI * s * s : 4.0 / 3.0 * MY_PI * s * s * s;
       }
       const char *kind = rows ? "perturbed-row" : "jammed";
       fprintf(out, "# create_peridem_bed: %lld %s security %s, seed %lld\n", count, kind,

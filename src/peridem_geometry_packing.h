@@ -1,5 +1,5 @@
 // Jammed polydisperse disk (2D) and sphere (3D) packings of a rectangular
-// container: the "security disks" of the grain-shape seed §7-7.1.
+// container: the "security disks" of Bhattacharya & Lipton 2023, §7-7.1.
 //
 // The seed (Bhattacharya and Lipton 2023, §7) starts a bed from disks that
 // are jammed (Definition 7.1: no disk can be displaced without overlapping
@@ -97,7 +97,7 @@ GapReport smallestGaps(const Packing &p);
 // packings are looser (walls order the first layer).
 double fractionInside(const Packing &p, const double *lo, const double *hi, int samples);
 
-// Local jamming (seed Definition 7.1 applied to one disk, the others fixed):
+// Local jamming (Bhattacharya & Lipton 2023, Definition 7.1 applied to one disk, the others fixed):
 // disk i cannot move iff the unit directions to its contacts (disks with gap
 // <= tau (r_i + r_j) / 2, walls with gap <= tau r_i) lie in no closed half-plane
 // (half-space in 3D), i.e. every displacement u has u . n_k > 0 for some k.
@@ -111,7 +111,7 @@ struct JammingReport {
 };
 JammingReport jammingReport(const Packing &p, double tolerance);
 
-// Rattler growth: the seed's §7.1 step 4 in spirit (each nodal circle gets the
+// Rattler growth: Bhattacharya & Lipton (2023) §7.1 step 4 in spirit (each nodal circle gets the
 // largest radius its neighbours and the walls allow, centre free). Each
 // rattler, the other disks fixed, moves to the centre of the largest disk
 // that fits in its cage (a local maximum over c of the distance to the
@@ -130,8 +130,8 @@ struct RattlerGrowth {
 };
 RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_passes = 8);
 
-// Perturbed-row bed of the PeriDEM paper (Jha, Desai, Bhattacharya and
-// Lipton 2021, §4.4 and Fig. 22): disks in rows on a "uniform grid", each
+// Perturbed-row bed of Jha, Desai, Bhattacharya and
+// Lipton (2021, §4.4 and Fig. 22): disks in rows on a "uniform grid", each
 // centre shifted randomly in x so that centres do not line up vertically; a
 // loose start that settles under gravity, not a jammed packing. Rows fill
 // the container from the floor, alternately from the left and from the right

@@ -1,4 +1,4 @@
-# create_peridem_bed (issue 12)
+# create_peridem_bed
 
 # the packed-bed example: the same bed and grains on 1 and 2 ranks
 peridem_add_example_test(packed_bed packed-bed in.bed 1 2)
@@ -48,3 +48,6 @@ peridem_add_error_test(bed_layout_value ${_b}
 peridem_add_error_test(bed_negative_gap ${_b}
   "create_peridem_bed: gap must be >= 0, got -0.1"
   -var bed "${_r} layout rows gap -0.1")
+peridem_add_error_test(bed_rows_3d ${_in}/bed/bed_box3d.in
+  "create_peridem_bed: layout rows is 2d only"
+  -var bed "${_r} layout rows")
