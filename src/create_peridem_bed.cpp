@@ -45,6 +45,9 @@ void CreatePeridemBed::command(int narg, char **arg)
   bool have_radius = false;
   peridem::RadiusDistribution dist;
   double rc = 0.0, tolerance = 1e-3;
+  bool grow = true;  // rattlers grow (default) or keep
+  bool rows = false; // layout rows: Jha et al.'s (2021) perturbed rows (§4.4)
+  double gap = 0.0, perturb = 0.1;
   double lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
     lo[k] = domain->boxlo[k];
@@ -107,6 +110,26 @@ void CreatePeridemBed::command(int narg, char **arg)
     } else if (key == "tolerance") {
       need(1, "tolerance");
       tolerance = num(iarg++);
+    } else if (key == "layout") {
+      need(1, "layout");
+      const std::string v = arg[iarg++];
+      if (v != "jammed" && v != "rows")
+        error->all(FLERR, "{}: layout must be jammed or rows, got '{}'", CMD, v);
+      rows = v == "rows";
+    } else if (key == "gap") {
+      need(1, "gap");
+      gap = num(iarg++);
+      if (!(gap >= 0.0)) error->all(FLERR, "{}: gap must be >= 0, got {}", CMD, gap);
+    } else if (key == "perturb") {
+      need(1, "perturb");
+      perturb = num(iarg++);
+      if (!(perturb >= 0.0)) error->all(FLERR, "{}: perturb must be >= 0, got {}", CMD, perturb);
+    } else if (key == "rattlers") {
+      need(1, "rattlers");
+      const std::string v = arg[iarg++];
+      if (v != "grow" && v != "keep")
+        error->all(FLERR, "{}: rattlers must be grow or keep, got '{}'", CMD, v);
+      grow = v == "grow";
     } else if (key == "labels") {
       while (iarg + 1 < narg && !utils::is_double(arg[iarg]) && utils::is_double(arg[iarg + 1])) {
         labels.emplace_back(arg[iarg]);
@@ -122,7 +145,8 @@ void CreatePeridemBed::command(int narg, char **arg)
       error->all(FLERR, "{}: unknown keyword '{}'", CMD, key);
     }
   }
-  if (count == 0) error->all(FLERR, "{}: no number of disks given (use count N)", CMD);
+  if (count == 0 && !rows) error->all(FLERR, "{}: no number of disks given (use count N)", CMD);
+  if (rows && dim != 2) error->all(FLERR, "{}: layout rows is 2d only", CMD);
   if (!have_radius) error->all(FLERR, "{}: no radius distribution given (use radius ...)", CMD);
   if (seed == 0) error->all(FLERR, "{}: no random seed given (use seed S)", CMD);
   if (labels.empty()) {
@@ -153,9 +177,45 @@ void CreatePeridemBed::command(int narg, char **arg)
       }
       opt.seed = static_cast<std::uint64_t>(seed);
       opt.tolerance = tolerance;
-      const auto radii = peridem::drawRadii(dist, count, static_cast<std::uint64_t>(seed));
-      const peridem::Packing p = peridem::packSpheres(radii, opt);
-      const auto jam = peridem::jammingReport(p, tolerance);
+      peridem::Packing p;
+      if (rows) {
+        // Jha et al. (2021) §4.4: perturbed rows, loose (settles under gravity)
+        peridem::RowOptions ro;
+        for (int k = 0; k < 3; k++) {
+          ro.lo[k] = opt.lo[k];
+          ro.hi[k] = opt.hi[k];
+        }
+        ro.gap = gap;
+        ro.perturb = perturb;
+        ro.seed = opt.seed;
+        ro.max_count = static_cast<std::size_t>(count);
+        p = peridem::rowPacking(dist, ro);
+        grow = false;
+        count = static_cast<long long>(p.radius.size());
+      } else {
+        const auto radii = peridem::drawRadii(dist, count, static_cast<std::uint64_t>(seed));
+        p = peridem::packSpheres(radii, opt);
+      }
+      // sizes before and after the rattler growth (it shifts them up)
+      auto moments = [](const std::vector<double> &r, double &mean, double &sd) {
+        mean = sd = 0.0;
+        for (double v : r) mean += v / r.size();
+        for (double v : r) sd += (v - mean) * (v - mean);
+        sd = r.size() > 1 ? std::sqrt(sd / (r.size() - 1)) : 0.0;
+      };
+      double mean0, sd0, mean1, sd1;
+      moments(p.radius, mean0, sd0);
+      const double fraction0 = p.fraction;
+      peridem::RattlerGrowth g;
+      if (grow) {
+        // Bhattacharya & Lipton (2023) §7.1 step 4: each rattler takes the largest disk its cage
+        // holds, capped at the distribution's upper bound
+        g = peridem::growRattlers(p, dist.largest(), tolerance);
+      } else if (!rows) {
+        const auto rep = peridem::jammingReport(p, tolerance);
+        g.before = g.after = rep.rattlers;
+      }
+      moments(p.radius, mean1, sd1);
 
       // angles and labels from their own stream of the seed
       peridem::PackingRandom rng(static_cast<std::uint64_t>(seed) ^ 0x9e3779b97f4a7c15ULL);
@@ -168,35 +228,48 @@ void CreatePeridemBed::command(int narg, char **arg)
       bed[top][1] = p.hi[top] + rc / 2; // the bed's lid (container coordinates)
       double vbed = 1.0, vgrain = 0.0;
       for (int k = 0; k < dim; k++) vbed *= bed[k][1] - bed[k][0];
-      for (double r : radii) {
+      for (double r : p.radius) {
         const double s = r - rc / 2;
         vgrain += dim == 2 ? MY_PI * s * s : 4.0 / 3.0 * MY_PI * s * s * s;
       }
-      fprintf(out, "# create_peridem_bed: %lld jammed security %s, seed %lld\n", count,
+      const char *kind = rows ? "perturbed-row" : "jammed";
+      fprintf(out, "# create_peridem_bed: %lld %s security %s, seed %lld\n", count, kind,
               dim == 2 ? "disks" : "spheres", seed);
       fprintf(out, "# bed %.17g %.17g %.17g %.17g %.17g %.17g\n", bed[0][0], bed[0][1], bed[1][0],
               bed[1][1], bed[2][0], bed[2][1]);
       fprintf(out,
-              "# jammed packing fraction %.6f (of the bed inset by R_c/2 = %g); after shrinking "
+              "# %s packing fraction %.6f (of the bed inset by R_c/2 = %g); after shrinking "
               "by R_c/2: %.6f of the bed; rattlers %zu\n",
-              p.fraction, rc / 2, vgrain / vbed, jam.rattlers);
+              kind, p.fraction, rc / 2, vgrain / vbed, g.after);
+      if (!rows)
+        fprintf(out,
+                "# rattlers %s: %zu before, %zu after (%zu capped at radius %g); fraction %.6f "
+                "before; radius mean %.6g sd %.6g before, mean %.6g sd %.6g after\n",
+                grow ? "grown" : "kept", g.before, g.after, g.capped, dist.largest(), fraction0,
+                mean0, sd0, mean1, sd1);
       fprintf(out, "# x y z radius angle(degrees) label   (radius: shrunk by R_c/2)\n");
-      for (std::size_t i = 0; i < radii.size(); i++) {
+      for (std::size_t i = 0; i < p.radius.size(); i++) {
         const double angle = 360.0 * rng.uniform();
         double u = rng.uniform() * wsum;
         std::size_t l = 0;
         while (l + 1 < labels.size() && u >= weights[l]) u -= weights[l++];
         fprintf(out, "%.17g %.17g %.17g %.17g %.17g %s\n", p.centre[i][0], p.centre[i][1],
-                p.centre[i][2], radii[i] - rc / 2, angle, labels[l].c_str());
+                p.centre[i][2], p.radius[i] - rc / 2, angle, labels[l].c_str());
       }
       fclose(out);
-      snprintf(line, sizeof(line),
-               "Created a bed of %lld jammed %s in %s: bed height %.6g (container %.6g), "
-               "packing fraction %.4f of security %s (%.4f after shrinking by R_c/2 = %g), "
-               "%zu rattlers, %d iterations\n",
-               count, dim == 2 ? "disks" : "spheres", file.c_str(), bed[top][1] - bed[top][0],
-               hi[top] - lo[top], p.fraction, dim == 2 ? "disks" : "spheres", vgrain / vbed, rc / 2,
-               jam.rattlers, p.iterations);
+      if (rows)
+        snprintf(line, sizeof(line),
+                 "Created a bed of %lld perturbed-row disks in %s: packing fraction %.4f of the "
+                 "container (%.4f after shrinking by R_c/2 = %g)\n",
+                 count, file.c_str(), p.fraction, vgrain / vbed, rc / 2);
+      else
+        snprintf(line, sizeof(line),
+                 "Created a bed of %lld jammed %s in %s: bed height %.6g (container %.6g), "
+                 "packing fraction %.4f of security %s (%.4f after shrinking by R_c/2 = %g), "
+                 "%zu rattlers (%zu before growth), %d iterations\n",
+                 count, dim == 2 ? "disks" : "spheres", file.c_str(), bed[top][1] - bed[top][0],
+                 hi[top] - lo[top], p.fraction, dim == 2 ? "disks" : "spheres", vgrain / vbed,
+                 rc / 2, g.after, g.before, p.iterations);
     } catch (peridem::GeometryError &e) {
       message = e.what();
     }

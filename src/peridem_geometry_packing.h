@@ -111,6 +111,46 @@ struct JammingReport {
 };
 JammingReport jammingReport(const Packing &p, double tolerance);
 
+// Rattler growth: Bhattacharya & Lipton (2023) §7.1 step 4 in spirit (each nodal circle gets the
+// largest radius its neighbours and the walls allow, centre free). Each
+// rattler, the other disks fixed, moves to the centre of the largest disk
+// that fits in its cage (a local maximum over c of the distance to the
+// nearest disk surface or wall, reached by a smoothed ascent) and takes that
+// radius, capped at `cap` (the distribution's upper bound). At the maximum
+// its contact directions lie in no closed half-plane (half-space), so it is
+// jammed unless capped. Passes repeat while the rattler count falls (a
+// grown rattler can jam a neighbouring one, a moved one can free a disk
+// that leaned on it). Disks only grow: the bed's sizes shift up (reported).
+struct RattlerGrowth {
+  std::size_t before = 0, after = 0; // rattlers before and after
+  std::size_t grown = 0;             // disks given a new centre and radius (all passes)
+  std::size_t capped = 0;            // remaining rattlers whose cage holds more than cap
+  int passes = 0;
+  std::vector<std::size_t> remaining; // rattler indices left
+};
+RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_passes = 8);
+
+// Perturbed-row bed of Jha, Desai, Bhattacharya and
+// Lipton (2021, §4.4 and Fig. 22): disks in rows on a "uniform grid", each
+// centre shifted randomly in x so that centres do not line up vertically; a
+// loose start that settles under gravity, not a jammed packing. Rows fill
+// the container from the floor, alternately from the left and from the right
+// wall (as the authors' setup script does); in a row the disks' bottoms are
+// aligned and consecutive disks are gap + U(0, 2 perturb r) apart (the random
+// x shift of the paper; never less than gap, so nothing overlaps); a row
+// starts gap above the highest disk of the row below and gap from the wall;
+// a row ends with the first disk that does not fit. Radii are drawn in order
+// from drawRadii(dist, max_count, seed); at most max_count disks.
+struct RowOptions {
+  int dimension = 2; // 2 only
+  double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  double gap = 0.0;     // >= 0: between disks, rows and walls
+  double perturb = 0.1; // random extra spacing up to 2 perturb r
+  std::uint64_t seed = 1;
+  std::size_t max_count = 0; // 0: as many as fit
+};
+Packing rowPacking(const RadiusDistribution &dist, const RowOptions &opt);
+
 // Smallest circle enclosing the points (Welzl's algorithm, expected linear):
 // the security disk of a 2D grain shape.
 struct EnclosingCircle {

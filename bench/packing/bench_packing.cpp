@@ -1,11 +1,15 @@
 // Benchmark: jam N polydisperse disks (radius
 // 0.4-1.1, mean 0.8, sd 0.09, Bhattacharya & Lipton's (2023) §7.3 bed) in a container
 // of width sqrt(N) mean diameters (a square-ish bed), one core. Prints N, the
-// median wall and CPU time of `repeats` runs, iterations, packing fraction, rattlers.
+// median wall and CPU time of `repeats` runs, iterations, packing fraction,
+// rattlers, and (with -DGROW, the default since growRattlers exists) the CPU time of
+// the rattler growth and the rattlers left after it.
 // Not a unit test; build by hand from the repo root:
 //   g++ -O3 -std=c++17 -Isrc bench/packing/bench_packing.cpp
 //       src/peridem_geometry_packing.cpp -o /tmp/bench_packing
 //   /tmp/bench_packing 1500 5000 20000 100000
+// bench/packing/compare.sh REV builds this and REV's packer (-DNO_GROW) and runs
+// them alternately, so both see the same load (CPU times, ratios).
 #include "peridem_geometry_packing.h"
 
 #include <algorithm>
@@ -39,6 +43,14 @@ int main(int argc, char **argv)
     std::sort(t.begin(), t.end());
     std::sort(cpu.begin(), cpu.end());
     const auto j = jammingReport(p, o.tolerance);
+#ifndef NO_GROW
+    const std::clock_t g0 = std::clock();
+    const RattlerGrowth G = growRattlers(p, 1.1, o.tolerance);
+    const double gcpu = static_cast<double>(std::clock() - g0) / CLOCKS_PER_SEC;
+    std::printf("N %zu  rattler growth cpu %.3f s: rattlers %zu -> %zu (%d passes), fraction "
+                "%.4f\n",
+                n, gcpu, G.before, G.after, G.passes, p.fraction);
+#endif
     std::printf("N %zu  median wall %.3f s, cpu %.3f s (%d runs)  ns per disk-iteration %.0f  "
                 "iterations %d  fraction %.4f  rattlers %.1f%%  smallest gap %.2g\n",
                 n, t[t.size() / 2], cpu[cpu.size() / 2], repeats,

@@ -159,7 +159,82 @@ TEST(GeometryPacking, DisksNeverOverlapOrCrossAWallAndAreJammed)
       EXPECT_GE(p.fraction, 0.80) << c.first << " disks";
     else
       EXPECT_GE(p.fraction, 0.76) << "narrow container: wall layers";
+
+    // rattler growth (Bhattacharya & Lipton 2023, §7.1 step 4): every disk jammed, still no overlap
+    Packing q = p;
+    const RattlerGrowth G = growRattlers(q, 1.1, tau);
+    EXPECT_EQ(G.before, j.rattlers);
+    const JammingReport jq = jammingReport(q, tau);
+    EXPECT_EQ(jq.rattlers, 0u) << c.first << " disks";
+    EXPECT_EQ(G.after, 0u);
+    const GapReport gq = smallestGaps(q);
+    EXPECT_GE(gq.pair, 0.0) << c.first << " disks " << gq.pair_i << " " << gq.pair_j;
+    EXPECT_GE(gq.wall, 0.0) << c.first << " disks, disk " << gq.wall_i;
+    // only rattlers changed, and only grew, within the distribution's range
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < q.radius.size(); i++) {
+      EXPECT_GE(q.radius[i], p.radius[i]);
+      EXPECT_LE(q.radius[i], 1.1);
+      changed += q.radius[i] != p.radius[i] || q.centre[i] != p.centre[i];
+    }
+    // (a disk can grow in two passes; a rattler can be jammed by a grown neighbour)
+    EXPECT_LE(changed, G.grown);
+    EXPECT_GT(changed, 0u);
+    EXPECT_GT(q.fraction, p.fraction);
+    // Definition 7.1 by brute force on every disk now
+    EXPECT_LE(movableBackboneDisks(q, jq, 0.1), c.first / 100) << c.first << " disks";
   }
+}
+
+TEST(GeometryPacking, RattlerGrowsToTheInscribedCircle)
+{
+  // three unit disks touching pairwise leave a hole whose inscribed circle
+  // has radius 2 / sqrt(3) - 1 (Descartes), centred at the triangle's centroid
+  Packing p;
+  p.dimension = 2;
+  p.lo[0] = p.lo[1] = -10.0;
+  p.hi[0] = p.hi[1] = 10.0;
+  const double h = std::sqrt(3.0);
+  p.centre = {{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, h, 0.0}, {0.02, 0.5, 0.0}};
+  p.radius = {1.0, 1.0, 1.0, 0.05};
+  // cap 1: the unit disks (rattlers too, nothing holds them) cannot grow
+  RattlerGrowth G = growRattlers(p, 1.0, tau);
+  EXPECT_EQ(G.grown, 1u);
+  EXPECT_NEAR(p.centre[3][0], 0.0, 1e-8);
+  EXPECT_NEAR(p.centre[3][1], h / 3.0, 1e-8);
+  EXPECT_NEAR(p.radius[3], 2.0 / h - 1.0, 1e-9);
+  for (int j = 0; j < 3; j++) // (the unit disks touch each other: gaps 0 +- rounding)
+    EXPECT_GE(std::hypot(p.centre[3][0] - p.centre[j][0], p.centre[3][1] - p.centre[j][1]) -
+                  p.radius[3] - p.radius[j],
+              0.0);
+  EXPECT_EQ(G.after, 3u); // the unit disks
+  EXPECT_EQ(G.remaining, (std::vector<std::size_t>{0, 1, 2}));
+  // a disk alone in a 2 x 2 box: its cage holds radius 1; capped at 0.5 it
+  // stays a rattler (no disk smaller than its cage is jammed) and says why
+  Packing b;
+  b.dimension = 2;
+  b.hi[0] = b.hi[1] = 2.0;
+  b.centre = {{0.3, 0.4, 0.0}};
+  b.radius = {0.2};
+  G = growRattlers(b, 0.5, tau);
+  EXPECT_EQ(G.after, 1u);
+  EXPECT_EQ(G.capped, 1u);
+  EXPECT_NEAR(b.radius[0], 0.5, 1e-9);
+  // uncapped it fills the box, touching all four walls: jammed
+  G = growRattlers(b, 5.0, tau);
+  EXPECT_EQ(G.after, 0u);
+  EXPECT_NEAR(b.radius[0], 1.0, 1e-9);
+  EXPECT_NEAR(b.centre[0][0], 1.0, 1e-9);
+  EXPECT_NEAR(b.centre[0][1], 1.0, 1e-9);
+  // 3D: a sphere in a 2 x 2 x 2 box grows to radius 1 at the centre
+  Packing s3;
+  s3.dimension = 3;
+  s3.hi[0] = s3.hi[1] = s3.hi[2] = 2.0;
+  s3.centre = {{0.5, 1.3, 0.6}};
+  s3.radius = {0.1};
+  G = growRattlers(s3, 5.0, tau);
+  EXPECT_EQ(G.after, 0u);
+  EXPECT_NEAR(s3.radius[0], 1.0, 1e-9);
 }
 
 TEST(GeometryPacking, RattlersAreFoundAndBlockingIsNotTrivial)
@@ -195,6 +270,13 @@ TEST(GeometryPacking, SpheresNeverOverlapAndAreDense)
   const JammingReport j = jammingReport(p, tau);
   EXPECT_LE(j.rattlers, 500u / 8);
   EXPECT_GT(j.mean_contacts, 5.0);
+  // rattler growth jams every sphere (contact directions in no closed half-space)
+  Packing q = p;
+  const RattlerGrowth G = growRattlers(q, 1.1, tau);
+  EXPECT_EQ(G.before, j.rattlers);
+  EXPECT_EQ(jammingReport(q, tau).rattlers, 0u);
+  EXPECT_GE(smallestGaps(q).pair, 0.0);
+  EXPECT_GE(smallestGaps(q).wall, 0.0);
   // whole box: the wall layers of a 6-diameter-wide box lower it (~0.57);
   // away from the walls (one mean diameter) random close packing: >= 0.60
   EXPECT_GE(p.fraction, 0.55);
@@ -242,6 +324,46 @@ TEST(GeometryPacking, PaperBedsReachThePaperFraction)
   const Packing q = pack2d(1490, 50.0, 100.0, 12);
   EXPECT_EQ(p.centre, q.centre);
   EXPECT_EQ(p.hi[1], q.hi[1]);
+}
+
+TEST(GeometryPacking, PerturbedRowsOfThePeriDemPaper)
+{
+  // Jha et al. (2021) §4.4 (Fig. 22): radii 1 mm +- 0.1 mm, rows in the authors'
+  // 68.5 mm x 41 mm container, clearance 0.2 mm, x shifts up to 0.1 r
+  RowOptions o;
+  o.hi[0] = 68.5;
+  o.hi[1] = 41.0;
+  o.gap = 0.2;
+  o.perturb = 0.1;
+  o.seed = 1;
+  const Packing p = rowPacking(RadiusDistribution::uniform(0.9, 1.1), o);
+  // the paper's 502 grains: 16 rows of ~31 disks
+  EXPECT_GT(p.radius.size(), 480u);
+  EXPECT_LT(p.radius.size(), 520u);
+  // exact: nothing closer than the gap, to another disk or a wall
+  const GapReport g = smallestGaps(p);
+  EXPECT_GE(g.pair, o.gap * (1 - 1e-12));
+  EXPECT_GE(g.wall, o.gap * (1 - 1e-12));
+  // centres not aligned vertically: neighbours in a row are apart by more than
+  // their radii and the gap, by a random extra of up to 2 perturb r
+  double spread = 0.0;
+  for (std::size_t i = 1; i < p.centre.size(); i++)
+    if (std::fabs(p.centre[i][1] - p.centre[i - 1][1]) < 0.25) // same row
+      spread = std::max(spread, std::fabs(std::fabs(p.centre[i][0] - p.centre[i - 1][0]) -
+                                          (p.radius[i] + p.radius[i - 1] + o.gap)));
+  EXPECT_GT(spread, 0.05); // random extra spacing up to 2 perturb r = 0.2
+  EXPECT_LE(spread, 2 * 0.1 * 1.1 + 1e-12);
+  // a count limit and the same seed give the first disks of the same bed
+  o.max_count = 100;
+  const Packing q = rowPacking(RadiusDistribution::uniform(0.9, 1.1), o);
+  ASSERT_EQ(q.radius.size(), 100u);
+  for (std::size_t i = 0; i < 100; i++) EXPECT_EQ(q.centre[i], p.centre[i]);
+  // errors
+  o.hi[0] = 2.0;
+  EXPECT_THROW(rowPacking(RadiusDistribution::uniform(0.9, 1.1), o), GeometryError);
+  o.hi[0] = 68.5;
+  o.gap = -0.1;
+  EXPECT_THROW(rowPacking(RadiusDistribution::uniform(0.9, 1.1), o), GeometryError);
 }
 
 TEST(GeometryPacking, ContainerErrors)

@@ -9,6 +9,8 @@
 #include "atom.h"
 #include "lammps.h"
 
+#include "peridem_geometry_packing.h"
+
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -43,14 +45,20 @@ std::vector<Line> read_bed(const std::string &file)
 
 const double Rc = 0.1, W = 10.0, H = 30.0;
 
+// a peridem box of 2 types; block = the region's six bounds
+std::string box_setup(int dim, const std::string &block)
+{
+  return std::string("units lj\ndimension ") +
+         (dim == 2 ? "2\nboundary f f p" : "3\nboundary f f f") +
+         "\natom_style peridem\natom_modify map array\nregion box block " + block +
+         "\ncreate_box 2 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 0\n"
+         "special_bonds lj/coul 0.0 1.0 1.0\n";
+}
+
 std::string bed_setup(const std::string &dir, const std::string &shapes)
 {
-  return "units lj\ndimension 2\nboundary f f p\natom_style peridem\natom_modify map array\n"
-         "region box block -0.5 10.5 -0.5 30.5 -0.1 0.1\n"
-         "create_box 2 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 0\n"
-         "special_bonds lj/coul 0.0 1.0 1.0\n"
-         "create_peridem_bed " +
-         dir + "bed.txt count 80 radius normal 0.8 0.09 0.4 1.1 seed 7 box 0 10 0 30 " +
+  return box_setup(2, "-0.5 10.5 -0.5 30.5 -0.1 0.1") + "create_peridem_bed " + dir +
+         "bed.txt count 80 radius normal 0.8 0.09 0.4 1.1 seed 7 box 0 10 0 30 " +
          "contact_radius 0.1 labels " + shapes;
 }
 
@@ -136,6 +144,29 @@ TEST_F(CreatePeridemBed, BedFileLinesAreTheJammedDisksShrunkByHalfRc)
     for (std::size_t j = i + 1; j < bed.size(); j++)
       EXPECT_GE(std::hypot(bed[i].x - bed[j].x, bed[i].y - bed[j].y), bed[i].r + bed[j].r + Rc);
   }
+  // every disk jammed (rattlers grown, the default): the file's disks, grown
+  // back by R_c/2 in the container inset by R_c/2 up to the bed's lid, pass
+  // the criterion of jammingReport with the packing tolerance
+  peridem::Packing p;
+  p.dimension = 2;
+  std::ifstream in(dir + "bed.txt");
+  std::string s, header;
+  while (std::getline(in, s))
+    if (s.rfind("# bed ", 0) == 0) {
+      std::istringstream l(s.substr(6));
+      l >> p.lo[0] >> p.hi[0] >> p.lo[1] >> p.hi[1];
+    } else if (s.rfind("# rattlers grown", 0) == 0)
+      header = s;
+  for (int d = 0; d < 2; d++) {
+    p.lo[d] += Rc / 2;
+    p.hi[d] -= Rc / 2;
+  }
+  for (const auto &b : bed) {
+    p.centre.push_back({b.x, b.y, 0.0});
+    p.radius.push_back(b.r + Rc / 2);
+  }
+  EXPECT_EQ(peridem::jammingReport(p, 1e-3).rattlers, 0u);
+  EXPECT_NE(header.find(" after (0 capped"), std::string::npos) << header;
   // the same seed writes the same file; placing it uses the file's angles
   command("create_peridem_bed " + dir + "again.txt count 80 radius normal 0.8 0.09 0.4 1.1 " +
           "seed 7 box 0 10 0 30 contact_radius 0.1 labels a 1");
@@ -144,6 +175,41 @@ TEST_F(CreatePeridemBed, BedFileLinesAreTheJammedDisksShrunkByHalfRc)
   s1 << f1.rdbuf();
   s2 << f2.rdbuf();
   EXPECT_EQ(s1.str(), s2.str());
+}
+
+TEST_F(CreatePeridemBed, PerturbedRowsOfThePeriDemPaper)
+{
+  // Jha et al. (2021) §4.4: radii 1 +- 0.1, circles and hexagons mixed 7 : 3 (the
+  // authors' setup script), perturbed rows filling the container
+  const std::string dir = scratch();
+  command(box_setup(2, "-0.5 20.5 -0.5 15.5 -0.1 0.1") + "create_peridem_bed " + dir +
+          "rows.txt radius uniform 0.9 1.1 seed 3 layout rows gap 0.2 perturb 0.1 "
+          "box 0 20 0 15 contact_radius 0.1 labels disk 0.7 hexagon 0.3");
+  const auto bed = read_bed(dir + "rows.txt");
+  ASSERT_GT(bed.size(), 40u);
+  std::map<std::string, int> count;
+  for (std::size_t i = 0; i < bed.size(); i++) {
+    count[bed[i].label]++;
+    // shrunk by R_c/2: R_c + gap from walls and from each other
+    EXPECT_GE(bed[i].x - bed[i].r, Rc + 0.2 - 1e-12);
+    EXPECT_GE(20.0 - bed[i].x - bed[i].r, Rc + 0.2 - 1e-12);
+    EXPECT_GE(bed[i].y - bed[i].r, Rc + 0.2 - 1e-12);
+    EXPECT_GE(15.0 - bed[i].y - bed[i].r, Rc + 0.2 - 1e-12);
+    EXPECT_GE(bed[i].r + Rc / 2, 0.9);
+    EXPECT_LE(bed[i].r + Rc / 2, 1.1);
+    for (std::size_t j = i + 1; j < bed.size(); j++)
+      EXPECT_GE(std::hypot(bed[i].x - bed[j].x, bed[i].y - bed[j].y),
+                bed[i].r + bed[j].r + Rc + 0.2 - 1e-12);
+  }
+  EXPECT_EQ(count.size(), 2u);
+  // 7 : 3 within 4 standard deviations of a binomial
+  const double n = bed.size(), sd = std::sqrt(n * 0.7 * 0.3);
+  EXPECT_NEAR(count["disk"], 0.7 * n, 4 * sd);
+  command("create_peridem_grains 1 disk spacing 0.2 horizon 0.6 density 1 positions " + dir +
+          "rows.txt");
+  command("create_peridem_grains 2 hexagon spacing 0.2 horizon 0.6 density 1 positions " + dir +
+          "rows.txt");
+  EXPECT_GT(lmp->atom->natoms, 0);
 }
 
 TEST_F(CreatePeridemBed, MeshGrainsFillTheirSecurityDisks)
@@ -172,12 +238,7 @@ TEST_F(CreatePeridemBed, SpheresAndBoxesIn3d)
 {
   // a 3d bed: spheres and boxes inscribed in their security spheres, R_c apart
   const std::string dir = scratch();
-  command("units lj\ndimension 3\nboundary f f f\natom_style peridem\natom_modify map array\n"
-          "region box block -0.5 6.5 -0.5 6.5 -0.5 20.5\n"
-          "create_box 2 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 0\n"
-          "special_bonds lj/coul 0.0 1.0 1.0\n"
-          "create_peridem_bed " +
-          dir +
+  command(box_setup(3, "-0.5 6.5 -0.5 6.5 -0.5 20.5") + "create_peridem_bed " + dir +
           "bed.txt count 40 radius uniform 0.8 1.1 seed 3 box 0 6 0 6 0 20 contact_radius 0.1 "
           "labels sphere 1 box 1");
   const auto bed = read_bed(dir + "bed.txt");

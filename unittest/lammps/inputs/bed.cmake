@@ -39,3 +39,15 @@ peridem_add_error_test(bed_unknown_shape ${_b}
 peridem_add_error_test(bed_no_label_lines ${_b}
   "create_peridem_grains: no line of the positions file has label 'hexagon'"
   -var bed "count 10 ${_r} labels disk 1" -var grains "hexagon")
+peridem_add_error_test(bed_rattlers_value ${_b}
+  "create_peridem_bed: rattlers must be grow or keep, got 'shake'"
+  -var bed "count 10 ${_r} rattlers shake")
+peridem_add_error_test(bed_layout_value ${_b}
+  "create_peridem_bed: layout must be jammed or rows, got 'grid'"
+  -var bed "count 10 ${_r} layout grid")
+peridem_add_error_test(bed_negative_gap ${_b}
+  "create_peridem_bed: gap must be >= 0, got -0.1"
+  -var bed "${_r} layout rows gap -0.1")
+peridem_add_error_test(bed_rows_3d ${_in}/bed/bed_box3d.in
+  "create_peridem_bed: layout rows is 2d only"
+  -var bed "${_r} layout rows")
