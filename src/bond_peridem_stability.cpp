@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    PERIDEM: the bonds' share of the time-step estimate of
-   pair_style peridem/contact (issue 10). Each bond style gives, per entry
+   pair_style peridem/contact. Each bond style gives, per entry
    of LAMMPS's bond list, a spring constant k_n whose pair-spring network
    bounds the linearised bond energy from above; the pair style then bounds
    the highest frequency by the Rayleigh quotient (stable_time_step in

@@ -43,8 +43,8 @@ void check_contact_params(const ContactParams &p)
 }
 
 /* ---------------------------------------------------------------------------------------
-   repulsion [BL] eq. (4.1) / Sec. 4.4, damping eq. (4.5) or [JDBL] eq. (22)-(25),
-   friction [BL] eq. (4.3) or [JDBL] eq. (19)-(20)
+   repulsion Bhattacharya & Lipton 2023, eq. (4.1) / Sec. 4.4, damping eq. (4.5) or Jha et al. 2021,
+eq. (22)-(25), friction Bhattacharya & Lipton 2023, eq. (4.3) or Jha et al. 2021, eq. (19)-(20)
 ------------------------------------------------------------------------------------------ */
 
 ContactResult contact_force(const ContactInput &in, const ContactParams &p)
@@ -69,11 +69,12 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p)
   // Normal damping: F_d = -c vn e.
   double c = 0.0;
   if (p.damping == ContactDamping::Nodal) {
-    // [BL] eq. (4.5) derivation: c = 2 r_d sqrt(k m), k = K V_i V_j, m = m_red (= rho V_x for
-    // a rigid partner, which is the seed's beta_d V_x V_y with beta_d = 2 r_d sqrt(K rho/V_y)).
+    // Bhattacharya & Lipton 2023, eq. (4.5) derivation: c = 2 r_d sqrt(k m), k = K V_i V_j, m =
+    // m_red (= rho V_x for a rigid partner, which is Bhattacharya & Lipton's (2023) beta_d V_x V_y
+    // with beta_d = 2 r_d sqrt(K rho/V_y)).
     c = 2.0 * p.r_d * std::sqrt(K * in.vol_i * in.vol_j * m_red);
   } else if (p.damping == ContactDamping::Restitution) {
-    // [JDBL] eq. (23) with m_eq of eq. (24) (harmonic mean; 2 m_i for a rigid partner).
+    // Jha et al. 2021, eq. (23) with m_eq of eq. (24) (harmonic mean; 2 m_i for a rigid partner).
     c = restitution_damping_coefficient(p.eps_n, p.C, p.kappa_eff, p.Rc,
                                         harmonic_mean(in.mass_i, in.mass_j));
   }
@@ -95,8 +96,9 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p)
     if (vt_norm > 0.0 && slip > 0.0) {
       double scale = slip / vt_norm; // slip: -mu|F_r| vt/|vt|
       if (p.friction == ContactFriction::Regularized && in.dt > 0.0) {
-        // [BL] eq. (4.3): stick when |vt| <= v_thr = mu|F_r| dt/m; then F = -(1/eps_f) vt with
-        // eps_f = dt/m, which stops the relative tangential motion of the pair in one step.
+        // Bhattacharya & Lipton 2023, eq. (4.3): stick when |vt| <= v_thr = mu|F_r| dt/m; then F =
+        // -(1/eps_f) vt with eps_f = dt/m, which stops the relative tangential motion of the pair
+        // in one step.
         const double v_thr = slip * in.dt / m_red;
         if (vt_norm <= v_thr) {
           scale = m_red / in.dt;
@@ -113,7 +115,7 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p)
 }
 
 /* ---------------------------------------------------------------------------------------
-   centroid damping [JDBL] eq. (26)-(27)
+   centroid damping Jha et al. 2021, eq. (26)-(27)
 ------------------------------------------------------------------------------------------ */
 
 double centroid_damping_force(const double sep_c[3], const double vrel_c[3], double beta_bar,
@@ -158,7 +160,7 @@ double wall_contact_stiffness(int dimension, double Kn, double V, double Rc, dou
   if (!(d < Rc)) return 0.0;
   d = std::max(d, 0.0);
   if (dimension == 2) return 2.0 * Kn * V * std::sqrt(Rc * Rc - d * d) * (Rc - d);
-  return kContactPi * Kn * V * (Rc * Rc - d * d) * (Rc - d);
+  return kPi * Kn * V * (Rc * Rc - d * d) * (Rc - d);
 }
 
 TimeStepEstimate stable_time_step(const TimeStepInput &in)
@@ -175,9 +177,9 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
     const bool conic = in.micromodulus == Micromodulus::Conic;
     double integral; // integral over the horizon of w(r)/r dV
     if (two_d)
-      integral = conic ? kContactPi * eps : 2.0 * kContactPi * eps;
+      integral = conic ? kPi * eps : 2.0 * kPi * eps;
     else
-      integral = conic ? 2.0 / 3.0 * kContactPi * eps * eps : 2.0 * kContactPi * eps * eps;
+      integral = conic ? 2.0 / 3.0 * kPi * eps * eps : 2.0 * kPi * eps * eps;
     // isotropic family: lambda_max(A) = (1/d) of the row sum
     out.dt_bond = bond_critical_time_step(in.rho, in.c * integral / in.dimension);
   }
@@ -193,7 +195,7 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
     out.shallow_depth = R > h ? R - std::sqrt(R * R - h * h) : R;
     double n = in.n_contacts; // effective pair springs: omega_c^2 = 2 n k/m
     if (n <= 0.0) {
-      const double ball_area = two_d ? kContactPi * R * R : 4.0 / 3.0 * kContactPi * R * R * R;
+      const double ball_area = two_d ? kPi * R * R : 4.0 / 3.0 * kPi * R * R * R;
       const double ball = 2.0 * std::ceil(ball_area / V) / in.dimension;
       const double shallow = 2.0 * (two_d ? 2.0 : 4.0);
       double neff = std::min(ball, shallow);
