@@ -40,6 +40,12 @@ class BondPeridem : public Bond {
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
+  // Time-step estimate (pair_style peridem/contact): for each entry n of LAMMPS's bond list a
+  // spring constant k[n] (0 for a broken entry) such that the bonds' linearised energy is at
+  // most 1/2 sum_n k[n] (e_n . (u_j - u_i))^2 (e_n the reference bond direction).
+  // Reference geometry, intact bonds; bond_peridem_stability.cpp.
+  virtual void stability_springs(std::vector<double> &k);
+
  protected:
   // the coefficients of one bond type, as bond_coeff derives them
   struct TypeParams {

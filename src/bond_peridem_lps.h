@@ -34,6 +34,7 @@ class BondPeridemLPS : public BondPeridem {
   double single(int, double, int, int, double &) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
+  void stability_springs(std::vector<double> &k) override;
 
   // dilation theta of local atoms after the last force computation (0 without bonds)
   const double *dilation() const { return theta; }

@@ -14,6 +14,8 @@
 #include "pair_peridem_contact.h"
 #include "lmp_peridem_citations.h"
 
+#include "bond_peridem.h"
+
 #include "atom.h"
 #include "bond.h"
 #include "comm.h"
@@ -654,9 +656,10 @@ void PairPeridemContact::report_time_step()
         error->all(FLERR, "{}: time step estimate for types {} {}: {}", STYLE, i, j, e.what());
       }
       lines += fmt::format("{}: types {} {}: time step estimate {:.4g} (critical {:.4g}: bonds "
-                           "{:.4g}, contact {:.4g} with damping ratio {:.3g})\n",
+                           "{:.4g}, contact {:.4g} with damping ratio {:.3g}, {:.3g} pair springs "
+                           "for contacts shallower than {:.3g})\n",
                            STYLE, i, j, est.dt_recommended, est.dt_critical, est.dt_bond,
-                           est.dt_contact, in.damping_ratio);
+                           est.dt_contact, in.damping_ratio, est.n_contacts, est.shallow_depth);
       if (est.dt_recommended < overall.dt_recommended) overall = est;
     }
   if (comm->me != 0 || lines.empty()) return;
@@ -676,9 +679,10 @@ void PairPeridemContact::report_time_step()
 
 /* ----------------------------------------------------------------------
    the bonds' part of the time-step bound (peridem_contact_law.h): for
-   each node the tensor A_i = sum of c w V_i V_j/|xi| e e over its bonds
-   (reference geometry, bond_style peridem's c, horizon and micromodulus;
-   the volume correction, <= 1, left out: an upper bound), and per atom
+   each node the tensor A_i = sum of k_b e e over its bonds, with the
+   spring constants k_b of the bond style (BondPeridem::stability_springs:
+   c w V_i V_j/|xi| for bond_style peridem, the bound of
+   lps_spring_constant() for peridem/lps), reference geometry, and per atom
    type the largest 2 lambda_max(A_i)/m_i. Bonds stored on another rank
    are not seen here (newton_bond): a node at a rank boundary may miss
    some, the interior nodes that set the maximum do not.
@@ -688,34 +692,28 @@ std::vector<double> PairPeridemContact::bond_omega2_of_types()
 {
   const int nt = atom->ntypes;
   std::vector<double> mine(nt + 1, 0.0), all(nt + 1, 0.0);
-  int dim = 0;
-  const double *c = force->bond ? (double *)force->bond->extract("c", dim) : nullptr;
-  const double *eps = force->bond ? (double *)force->bond->extract("horizon", dim) : nullptr;
-  const int *conic = force->bond ? (int *)force->bond->extract("conic", dim) : nullptr;
+  auto *bonds = dynamic_cast<BondPeridem *>(force->bond);
   const int nlocal = atom->nlocal;
-  if (c && eps && conic && neighbor->nbondlist > 0) {
+  if (bonds && neighbor->nbondlist > 0) {
     const int d = domain->dimension;
+    std::vector<double> kb;
+    bonds->stability_springs(kb);
     std::vector<double> A(6 * (size_t)nlocal, 0.0);
     double **x0 = atom->x0;
-    const double *vol = atom->vfrac;
     for (int n = 0; n < neighbor->nbondlist; n++) {
       const int *b = neighbor->bondlist[n];
-      const int i1 = b[0], i2 = b[1], type = b[2];
-      if (type <= 0) continue;
+      const int i1 = b[0], i2 = b[1];
+      if (b[2] <= 0 || !(kb[n] > 0.0)) continue;
       double e[3] = {x0[i2][0] - x0[i1][0], x0[i2][1] - x0[i1][1], x0[i2][2] - x0[i1][2]};
       PERIDEM::minimum_image(domain, e[0], e[1], e[2]);
       const double r0 = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
       if (!(r0 > 0.0)) continue;
       for (double &ek : e) ek /= r0;
-      const peridem::Micromodulus mm =
-          conic[type] ? peridem::Micromodulus::Conic : peridem::Micromodulus::Constant;
-      const double k0 = c[type] * peridem::micromodulus_value(mm, r0, eps[type]) / r0;
       const double outer[6] = {e[0] * e[0], e[1] * e[1], e[2] * e[2],
                                e[0] * e[1], e[0] * e[2], e[1] * e[2]};
       for (const int i : {i1, i2}) {
         if (i >= nlocal) continue;
-        const double k = k0 * vol[i] * vol[i == i1 ? i2 : i1];
-        for (int m = 0; m < 6; m++) A[6 * (size_t)i + m] += k * outer[m];
+        for (int m = 0; m < 6; m++) A[6 * (size_t)i + m] += kb[n] * outer[m];
       }
     }
     for (int i = 0; i < nlocal; i++) {

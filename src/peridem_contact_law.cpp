@@ -155,6 +155,14 @@ double symmetric_max_eigenvalue(const double *a, int dimension)
   return q + 2.0 * p * std::cos(std::acos(r) / 3.0);
 }
 
+double wall_contact_stiffness(int dimension, double Kn, double V, double Rc, double d)
+{
+  if (!(d < Rc)) return 0.0;
+  d = std::max(d, 0.0);
+  if (dimension == 2) return 2.0 * Kn * V * std::sqrt(Rc * Rc - d * d) * (Rc - d);
+  return kPi * Kn * V * (Rc * Rc - d * d) * (Rc - d);
+}
+
 TimeStepEstimate stable_time_step(const TimeStepInput &in)
 {
   if (in.dimension != 2 && in.dimension != 3)
@@ -181,15 +189,24 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
     const double V = in.node_volume, m = in.min_node_mass, R = in.Rc;
     if (!(V > 0.0) || !(m > 0.0) || !(R > 0.0))
       throw ParameterError("stable_time_step: node volume, node mass and Rc must be > 0");
-    double n = in.n_contacts;
+    const double k = in.Kn * V * V; // one pair spring
+    const double h = two_d ? std::sqrt(V) : std::cbrt(V);
+    // penetration below which a lattice surface offers at most 2^(d-1) partners
+    out.shallow_depth = R > h ? R - std::sqrt(R * R - h * h) : R;
+    double n = in.n_contacts; // effective pair springs: omega_c^2 = 2 n k/m
     if (n <= 0.0) {
-      const double ball = two_d ? kPi * R * R : 4.0 / 3.0 * kPi * R * R * R;
-      const double wall = two_d ? 2.0 * R * R : kPi * R * R * R; // k_wall/(K_n V)
-      n = std::ceil(ball / V) / in.dimension + (in.walls ? std::ceil(wall / V) : 0.0);
+      const double ball_area = two_d ? kPi * R * R : 4.0 / 3.0 * kPi * R * R * R;
+      const double ball = 2.0 * std::ceil(ball_area / V) / in.dimension;
+      const double shallow = 2.0 * (two_d ? 2.0 : 4.0);
+      double neff = std::min(ball, shallow);
+      if (in.walls)
+        neff = std::max(
+            neff, wall_contact_stiffness(in.dimension, in.Kn, V, R, R - out.shallow_depth) / k);
+      n = 0.5 * neff;
     }
     out.n_contacts = n;
     const double z = in.damping_ratio;
-    out.dt_contact = std::sqrt(2.0 * m / (n * in.Kn * V * V)) * (std::sqrt(1.0 + z * z) - z);
+    out.dt_contact = std::sqrt(2.0 * m / (n * k)) * (std::sqrt(1.0 + z * z) - z);
   }
 
   const double inv2 = 1.0 / (out.dt_bond * out.dt_bond) + 1.0 / (out.dt_contact * out.dt_contact);

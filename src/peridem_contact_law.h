@@ -293,25 +293,50 @@ inline double grain_node_share(double node_volume, double grain_volume)
 // ---------------------------------------------------------------------------------------
 // Bound on the largest frequency of the linearised system (velocity Verlet / central
 // difference is stable for dt < 2/omega_max, and (2/omega)(sqrt(1+zeta^2) - zeta) with damping
-// ratio zeta).  For springs k_b along unit vectors e_b (bonds: k_b = c w V_i V_j/|xi|, contact:
-// K_n V_i V_j) the Rayleigh quotient gives
-//   u.K u = sum_b k_b (e_b.(u_i - u_j))^2 <= 2 sum_i u_i.A_i u_i,  A_i = sum_{b at i} k_b e_b e_b,
-// so omega^2 <= 2 max_i lambda_max(A_i)/m_i.  A family symmetric under the lattice's 90-degree
-// rotations has an isotropic A_i = (sum k_b/d) 1, a d times tighter bound than Silling &
-// Askari's row sum (2 sum k_b/m_i), which assumes all bonds along one line:
+// ratio zeta).  For springs k_b along unit vectors e_b between free nodes (bonds:
+// k_b = c w V_i V_j/|xi|, contact: K_n V_i V_j) and springs k_w along the normal n to rigid
+// partners (walls) the Rayleigh quotient gives
+//   u.K u = sum_b k_b (e_b.(u_i - u_j))^2 + sum_w k_w (n.u_i)^2 <= sum_i u_i.(2 A_i + W_i) u_i,
+//   A_i = sum_{b at i} k_b e_b e_b,  W_i = sum_{w at i} k_w n n,
+// so omega^2 <= max_i lambda_max(2 A_i + W_i)/m_i: a spring to a rigid partner counts once,
+// a spring between two free nodes twice (Silling & Askari 2005 take the row sum, which
+// assumes all bonds along one line; a family symmetric under the lattice's 90-degree rotations
+// has an isotropic A_i = (sum k_b/d) 1, d times less).
 //  bonds:    given explicitly (bond_omega2 = max_i 2 lambda_max(A_i)/m_i over the actual bonds,
 //            what pair_style peridem/contact passes), or from the full-horizon integral
 //            (isotropic): omega_b^2 = (2/d) c I/rho with I = int_H w(r)/r dV:
 //            2D  constant 2 pi eps, conic pi eps;  3D  constant 2 pi eps^2, conic (2/3) pi eps^2.
-//  contact:  a node with partners in its whole contact ball (isotropic, ceil(|B_Rc|/V) springs
-//            K_n V^2, V the largest nodal volume) and a wall (normal only, the wall stiffness at
-//            contact k_wall = 2 K_n V R_c^2 (2D) or pi K_n V R_c^3 (3D) as ceil(k_wall/(K_n V^2))
-//            springs, only where there are walls): n_c = ceil(|B_Rc|/V)/d + ceil(k_wall/(K_n V^2))
-//            effective springs on the
-//            smallest nodal mass m: dt_c = sqrt(2 m/(n_c K_n V^2)) times the damping factor.
+//  contact:  the springs a node meets at the penetrations a stable run reaches.
+//            k = K_n V^2 (V the largest nodal volume, h = V^(1/d) the spacing), on the smallest
+//            nodal mass m, omega_c^2 = n_eff k/m with n_eff the largest of
+//            * partners of another grain: at most min(ball, shallow), where
+//              ball    = 2 ceil(|B_Rc|/V)/d   (the contact ball full of partners, isotropic), and
+//              shallow = 2 x 2^(d-1)          (the surface row (2D) or plane (3D) of a lattice
+//                        grain offers at most 2^(d-1) nodes within R_c while the penetration
+//                        delta = R_c - gap stays below delta_s = R_c - sqrt(R_c^2 - h^2): a third
+//                        node of the row, lateral distance h, needs gap^2 + h^2 < R_c^2; the
+//                        second row, gap + h < R_c, needs a deeper one; for R_c <= h never)
+//            * a wall at the same depth: the tangent stiffness of Bhattacharya & Lipton 2023, eq.
+//            (4.7) at distance
+//              d = R_c - delta_s (wall_contact_stiffness), counted once (rigid partner).
+//            One body at a time: a node pressed into one body has its own grain on the other
+//            side.  The penetrations of the papers' runs are far below delta_s (the grain-shape
+//            bed: delta_s = 0.35 h = 22 um, reached with eps^5 only by ~1 J/m per node against
+//            ~1e-4 J/m of kinetic energy a node has after falling the box height); runs that
+//            press nodes deeper (crushing, compaction to overlap) need a smaller step than this
+//            estimate: n_contacts overrides n_eff/2 (effective pair springs).
+//            dt_c = (2/omega_c) (sqrt(1+zeta^2) - zeta), zeta the damping ratio of one pair.
 //  combined: omega^2 <= omega_b^2 + omega_c^2  =>  dt = 1/sqrt(1/dt_b^2 + 1/dt_c^2);
 //            recommended = safety * dt.
 // Measured thresholds against this estimate: doc/pair_peridem_contact.rst.
+
+// Normal tangent stiffness -dF/dd of the wall force of Bhattacharya & Lipton 2023, eq. (4.7) on a
+// node at distance d in [0, R_c] from one wall plane (F = K_n V (R_c |S| - M),
+// peridem_wall_geometry.h):
+//   2D  2 K_n V sqrt(R_c^2 - d^2) (R_c - d)      3D  pi K_n V (R_c^2 - d^2) (R_c - d)
+// (2 K_n V R_c^2 and pi K_n V R_c^3 on the wall plane, 0 at d = R_c).
+double wall_contact_stiffness(int dimension, double Kn, double V, double Rc, double d);
+
 struct TimeStepInput {
   int dimension = 3;
   double rho = 0.0; // density
@@ -324,8 +349,8 @@ struct TimeStepInput {
   double Kn = 0.0;            // 0: no contact
   double Rc = 0.0;
   double damping_ratio = 0.0; // contact damping ratio (r_d, or zeta of eq. 23)
-  double n_contacts = 0.0;    // 0: default above
-  bool walls = true;          // default n_c: add the wall term (a fix peridem/wall exists)
+  double n_contacts = 0.0;    // > 0: effective pair springs n (omega_c^2 = 2 n k/m); 0: above
+  bool walls = true;          // a fix peridem/wall exists: the wall term takes part
   double safety = 0.8;
 };
 struct TimeStepEstimate {
@@ -333,7 +358,8 @@ struct TimeStepEstimate {
   double dt_contact = std::numeric_limits<double>::infinity();
   double dt_critical = std::numeric_limits<double>::infinity();    // combined
   double dt_recommended = std::numeric_limits<double>::infinity(); // safety * dt_critical
-  double n_contacts = 0.0;
+  double n_contacts = 0.0;    // effective pair springs omega_c^2 m/(2 k) used
+  double shallow_depth = 0.0; // delta_s (R_c when R_c <= h)
 };
 TimeStepEstimate stable_time_step(const TimeStepInput &in);
 

@@ -90,6 +90,25 @@ inline double lps_bond_energy(const LpsConstants &c, double k, double r0, double
           c.a * r0 * r0 * (theta_i * theta_i * inv_m_i + theta_j * theta_j * inv_m_j));
 }
 
+// Time-step bound (pair_style peridem/contact): the LPS energy is not a sum over
+// bonds (theta couples a node's whole family), but it is bounded by one.  For node i with
+// S = sum_j omega beta e^2 V_j:
+//   theta_i^2 = (d/m)^2 (sum omega beta r e V)^2 <= (d^2/m) S          (Cauchy-Schwarz, m =
+//                                                                       sum omega beta r^2 V)
+//   sum omega beta (e - theta r/d)^2 V <= S   (theta r/d is the omega beta V-weighted least-
+//                                              squares fit of e by a multiple of r)
+// so W_i <= (a d^2 + b)/(2 m_i) S and sum_i V_i W_i <= 1/2 sum_bonds k_b e_b^2 with
+//   k_b = (a d^2 + b) omega beta V_i V_j (1/m_i + 1/m_j).
+// Linearised about the reference state (e_b = e_b.(u_j - u_i)) this is a bond-based spring
+// network that is at least as stiff as the LPS, so the Rayleigh bound of the bond-based
+// time step (Silling & Askari 2005, stable_time_step in peridem_contact_law.h) holds with
+// these springs.  Pure dilation attains the volumetric part (ratio a d^2/(a d^2 + b)), a
+// pure deviatoric field with theta = 0 the deviatoric part.
+inline double lps_spring_constant(const LpsConstants &c)
+{
+  return c.a * c.d * c.d + c.b;
+}
+
 } // namespace peridem
 
 #endif

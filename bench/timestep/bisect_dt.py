@@ -5,13 +5,16 @@ For each case the script reads the time-step estimate that pair_style peridem/co
 at setup ("recommended time step R (critical C: bonds B, contact K)"), then bisects the time
 step dt of the run itself: a run is unstable when it stops with PERIDEM-UNSTABLE, a LAMMPS
 error (lost or missing bond atoms) or, for the restitution drop, a coefficient of restitution
-outside [0, 1.05].  It starts at half the critical estimate, doubles dt until the run is
-unstable, then halves the bracket `--steps` times.  Prints one table row per case.
+outside [0, 1.05].  It starts at `--start` (0.5) x the critical estimate, multiplies dt by
+`--grow` (2) until the run is unstable, then halves the bracket `--steps` times.  Prints one table row per case.
 
-Cases (both at the papers' parameters):
+Cases (at the papers' parameters):
   bed4, bed5  the grain-shape paper's Sec. 7.3 bed (examples/bed-settling/in.bed, reduced to
               4 grains of radius 0.2-0.25 mm) with K_n eps^4 (2D default) and eps^5, run for
               0.6 ms of physical time (fall, impacts and bounces)
+  bed4lps     bed4 with state-based grains (bond_style peridem/lps, M2's K and E)
+  bed24, bed24e5  the whole 24-grain bed of examples/bed-settling (radii 0.4-0.7 mm), eps^4
+              and eps^5 (use --time 1.5e-3: the upper rows land after 1 ms)
   rest5, rest4  the PeriDEM paper's two-particle drop (examples/restitution/in.restitution,
               damping centroid 0.8 100) with eps^5 (its Table 2) and eps^4
 
@@ -31,6 +34,11 @@ ap.add_argument("--lmp", default=os.path.join(root, "build/lmp_peridem"))
 ap.add_argument("--cases", default="bed4,bed5,rest5,rest4")
 ap.add_argument("--steps", type=int, default=5)
 ap.add_argument("--time", type=float, default=6e-4, help="physical time of a bed run (s)")
+ap.add_argument("--start", type=float, default=0.5,
+                help="first dt of the bracket search, as a multiple of the critical estimate")
+ap.add_argument("--grow", type=float, default=2.0, help="factor between bracket trials")
+ap.add_argument("--extra", default="", help="more LAMMPS command-line words for every run, "
+                "e.g. '-var rd 0' (bed: damping ratio) or '-var mu 0' (bed: friction)")
 ap.add_argument("--check", type=float, default=0.0,
                 help="no bisection: require a stable run at the critical estimate and an "
                      "unstable one at CHECK x it; prints PERIDEM-PASS or PERIDEM-FAIL")
@@ -46,6 +54,12 @@ def bed_args(form, dt):
              str(steps)])
 
 
+def bed24_args(form, dt):
+    steps = int(math.ceil(a.time / dt))
+    return (os.path.join(root, "examples/bed-settling"), "in.bed",
+            ["-var", "chunk", "500", "-var", "kn_form", form, "-var", "maxsteps", str(steps)])
+
+
 def rest_args(form, dt):
     return (os.path.join(root, "examples/restitution"), "in.restitution",
             ["-var", "eps_n", "0.8", "-var", "kn_form", form])
@@ -54,6 +68,9 @@ def rest_args(form, dt):
 CASES = {
     "bed4": lambda dt: bed_args("eps4", dt),
     "bed5": lambda dt: bed_args("eps5", dt),
+    "bed4lps": lambda dt: bed_args("eps4", dt) + (["-var", "bond", "peridem/lps"],),
+    "bed24": lambda dt: bed24_args("eps4", dt),
+    "bed24e5": lambda dt: bed24_args("eps5", dt),
     "rest5": lambda dt: rest_args("eps5", dt),
     "rest4": lambda dt: rest_args("eps4", dt),
 }
@@ -61,11 +78,13 @@ CASES = {
 
 def run(case, dt):
     """(stable?, estimate (recommended, critical) or None, note)"""
-    folder, inp, extra = CASES[case](dt)
+    folder, inp, extra, *more = CASES[case](dt)
+    for words in more:
+        extra = extra + words
     with tempfile.TemporaryDirectory() as tmp:
         log = os.path.join(tmp, "log.lammps")
         cmd = [a.lmp, "-in", inp, "-var", "potentials", pot, "-var", "dt", repr(dt), "-log", log,
-               "-echo", "none", "-screen", "none"] + extra
+               "-echo", "none", "-screen", "none"] + extra + a.extra.split()
         p = subprocess.run(cmd, cwd=folder, capture_output=True, text=True)
         text = open(log).read() if os.path.exists(log) else ""
     m = re.search(r"recommended time step ([0-9.eE+-]+) \(critical ([0-9.eE+-]+)", text)
@@ -105,14 +124,14 @@ for case in a.cases.split(","):
     _, est, _ = run(case, a.time / 500) if case.startswith("bed") else run(case, 5e-8)
     crit = est[1]
     lo, hi = None, None
-    dt = 0.5 * crit
+    dt = a.start * crit
     while dt < 64 * crit:
         ok, _, note = run(case, dt)
         print("  %s dt = %.4g: %s (%s)" % (case, dt, "stable" if ok else "unstable", note),
               flush=True)
         if ok:
             lo = dt
-            dt *= 2.0
+            dt *= a.grow
         else:
             hi = dt
             break

@@ -94,14 +94,9 @@ fig.tight_layout()
 fig.savefig(sys.argv[2], dpi=120)
 """
 # matplotlib of this python, else Debian's (python3-matplotlib)
-dat, png = os.path.join(a.out, "restitution.dat"), os.path.join(a.out, "restitution.png")
-for py in [sys.executable, "/usr/bin/python3"]:
-    if os.path.exists(py) and subprocess.run([py, "-c", PLOT, dat, png],
-                                             stderr=subprocess.DEVNULL).returncode == 0:
-        print("wrote " + png)
-        break
-else:
-    print("matplotlib not installed: no restitution.png")
+sys.path.insert(0, here)
+from plot_png import plot  # noqa: E402
+plot(PLOT, os.path.join(a.out, "restitution.dat"), os.path.join(a.out, "restitution.png"))
 
 if a.check:
     bad = []

@@ -453,12 +453,30 @@ TEST(ContactLaw, StableTimeStep)
   c.node_volume = 1e-8; // h = 1e-4
   c.min_node_mass = 1.2e-5;
   t = stable_time_step(c);
-  // ceil(pi Rc^2/V)/d + ceil(2 Rc^2/V) = ceil(2.835)/2 + ceil(1.805) = 3.5 (ball isotropic,
-  // wall along its normal)
-  EXPECT_DOUBLE_EQ(t.n_contacts, 3.5);
-  EXPECT_NEAR(t.dt_contact, std::sqrt(2.0 * 1.2e-5 / (3.5 * 1e20 * 1e-16)), 1e-20);
-  c.walls = false; // no wall: the ball alone
+  // R_c < h: the ball holds ceil(pi Rc^2/V) = ceil(2.835) = 3 partners, isotropic: 2 x 3/2 =
+  // 3 k/m, below the shallow bound 2 x 2 k/m; the wall (no shallow limit for R_c < h: on its
+  // plane) 2 Rc^2/V = 1.805 k/m is smaller: n = 3/2 pair springs, with or without walls
+  EXPECT_DOUBLE_EQ(t.n_contacts, 1.5);
+  EXPECT_DOUBLE_EQ(t.shallow_depth, c.Rc);
+  EXPECT_NEAR(t.dt_contact, std::sqrt(2.0 * 1.2e-5 / (1.5 * 1e20 * 1e-16)), 1e-20);
+  c.walls = false;
   EXPECT_DOUBLE_EQ(stable_time_step(c).n_contacts, 1.5);
+  // the grain-shape paper's R_c = 1.6 h: ball 2 ceil(8.04)/2 = 9 k/m, shallow 4 k/m (2 nodes
+  // of a surface row until delta_s = (1.6 - sqrt(1.56)) h = 0.351 h), the wall at that depth
+  // 2 sqrt(Rc^2 - d^2)(Rc - d)/h^2 = 2 x 1 x 0.351 = 0.70 k/m: n = 2
+  c.Rc = 1.6e-4;
+  c.walls = true;
+  TimeStepEstimate gs = stable_time_step(c);
+  EXPECT_NEAR(gs.shallow_depth, (1.6 - std::sqrt(1.56)) * 1e-4, 1e-15);
+  EXPECT_DOUBLE_EQ(gs.n_contacts, 2.0);
+  // in 3D (V = h^3): ball 2 ceil(17.2)/3 = 12, shallow 2 x 4 = 8 (4 nodes of a surface
+  // plane), wall pi (Rc^2 - d^2)(Rc - d)/h^3 = pi x 0.351 = 1.10: n = 4
+  c.dimension = 3;
+  c.node_volume = 1e-12;
+  EXPECT_DOUBLE_EQ(stable_time_step(c).n_contacts, 4.0);
+  c.dimension = 2;
+  c.node_volume = 1e-8;
+  c.Rc = 0.95e-4;
   c.walls = true;
   c.damping_ratio = 0.5;
   EXPECT_LT(stable_time_step(c).dt_contact, t.dt_contact);

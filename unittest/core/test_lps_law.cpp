@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <vector>
 
 using namespace peridem;
 
@@ -150,4 +151,54 @@ TEST(LpsLaw, BondEnergySumsToTheNodeEnergy)
   }
   const double W = 0.5 * c.a * theta * theta + 0.5 * c.b / m * dev;
   EXPECT_NEAR(shares, Vi * W, 1e-14 * Vi * W);
+}
+
+// The time-step bound of the LPS (lps_spring_constant): for any extensions e_j of a node's
+// family W_i <= (a d^2 + b)/(2 m_i) sum omega beta e^2 V_j (Cauchy-Schwarz on theta, least
+// squares on the deviatoric part), with equality of the volumetric part for pure dilation and
+// of the deviatoric part for theta = 0.  A random 2D family (plane strain) and a 3D one.
+TEST(LpsLaw, SpringConstantBoundsTheNodeEnergy)
+{
+  unsigned seed = 12345;
+  auto uniform = [&seed]() {
+    seed = seed * 1103515245u + 12345u;
+    return ((seed >> 8) & 0xffff) / 65536.0;
+  };
+  for (int dim : {2, 3}) {
+    const LpsConstants c = lps_constants(dim, LpsPlane::PlaneStrain, 2.0e9, 0.9e9);
+    const int n = 40;
+    std::vector<double> r(n), w(n), V(n), e(n);
+    for (int j = 0; j < n; j++) {
+      r[j] = 0.1 + 0.9 * uniform();
+      w[j] = influence_value(Influence::Conic, r[j], 1.05);
+      V[j] = 0.5 + uniform();
+    }
+    auto energy = [&](const std::vector<double> &ext, double &bound) {
+      double m = 0.0, s = 0.0, sq = 0.0;
+      for (int j = 0; j < n; j++) {
+        m += w[j] * r[j] * r[j] * V[j];
+        s += w[j] * r[j] * ext[j] * V[j];
+        sq += w[j] * ext[j] * ext[j] * V[j];
+      }
+      const double theta = c.d / m * s;
+      double dev = 0.0;
+      for (int j = 0; j < n; j++) {
+        const double ed = ext[j] - theta * r[j] / c.d;
+        dev += w[j] * ed * ed * V[j];
+      }
+      bound = 0.5 * lps_spring_constant(c) / m * sq;
+      return 0.5 * c.a * theta * theta + 0.5 * c.b / m * dev;
+    };
+    double bound = 0.0;
+    for (int trial = 0; trial < 200; trial++) {
+      for (int j = 0; j < n; j++) e[j] = uniform() - 0.3;
+      const double W = energy(e, bound);
+      EXPECT_GT(W, 0.0);
+      EXPECT_LE(W, bound * (1.0 + 1e-12)) << "dim " << dim << " trial " << trial;
+    }
+    // pure dilation e = s r: W = a d^2 s^2/2, bound (a d^2 + b) s^2/2
+    for (int j = 0; j < n; j++) e[j] = 1e-3 * r[j];
+    const double Wdil = energy(e, bound);
+    EXPECT_NEAR(Wdil / bound, c.a * c.d * c.d / lps_spring_constant(c), 1e-12);
+  }
 }

@@ -520,3 +520,25 @@ TEST(WallGeometry3D, CornerPartnersAndContinuity)
   for (int k = 0; k < 3; ++k)
     EXPECT_NEAR(side[0].moment[k], side[1].moment[k], 1e-12 * std::pow(R, 4));
 }
+
+// The wall's normal tangent stiffness used by the time-step estimate (wall_contact_stiffness,
+// peridem_contact_law.h) is the second derivative of the wall potential of Bhattacharya & Lipton 2023, eq. (4.7):
+// checked by central differences of wall_potential in 2D and 3D over the contact range.
+TEST(WallGeometry, ContactStiffnessIsPotentialCurvature)
+{
+  const double Kn = 3.0, V = 0.7, R = 1.3;
+  for (int dim : {2, 3})
+    for (double frac : {0.0, 0.1, 0.35, 0.6, 0.9, 0.99}) {
+      const double d = frac * R, step = 1e-4 * R;
+      const double curv =
+          (wall_potential(dim, Kn, R, V, d + step) - 2.0 * wall_potential(dim, Kn, R, V, d) +
+           wall_potential(dim, Kn, R, V, d - step)) /
+          (step * step);
+      const double k = wall_contact_stiffness(dim, Kn, V, R, d);
+      EXPECT_NEAR(k, curv, 1e-5 * Kn * V * R * R) << "dim " << dim << " d/R " << frac;
+    }
+  // on the plane: 2 K V R^2 (2D) and pi K V R^3 (3D); nothing at d = R
+  EXPECT_DOUBLE_EQ(wall_contact_stiffness(2, Kn, V, R, 0.0), 2.0 * Kn * V * R * R);
+  EXPECT_DOUBLE_EQ(wall_contact_stiffness(3, Kn, V, R, 0.0), M_PI * Kn * V * R * R * R);
+  EXPECT_EQ(wall_contact_stiffness(2, Kn, V, R, R), 0.0);
+}

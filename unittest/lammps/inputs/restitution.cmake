@@ -47,3 +47,12 @@ peridem_add_error_test(centroid_C_zero ${PROJECT_SOURCE_DIR}/examples/restitutio
 peridem_add_error_test(centroid_in_wall ${_in}/wall_error.in
   "fix peridem/wall: damping centroid acts between grains and is available in pair_coeff"
   -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 1 damping centroid 0.9 100" -var nsteps 0)
+
+# the seed's Table 3 (mixed sizes and materials, examples/two-particle-mixed), reduced to its
+# test 6 (top disk of radius 3 mm on one of 1 mm, M1): elastic C_R within 1.5 % of 1 and the
+# dashpot lowers it (35 s of CPU; the full table is the README's)
+add_test(NAME two_particle_mixed_test6
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh python3 ${PROJECT_SOURCE_DIR}/examples/two-particle-mixed/run_mixed.py
+          --lmp $<TARGET_FILE:lmp_peridem> --potentials ${PROJECT_SOURCE_DIR}/potentials
+          --cases 6 --out ${CMAKE_CURRENT_BINARY_DIR}/two-particle-mixed --check)
+set_tests_properties(two_particle_mixed_test6 PROPERTIES TIMEOUT 600)

@@ -1,0 +1,15 @@
+"""Runs a matplotlib script (argv: data file, PNG) with this Python's matplotlib, else Debian's
+(/usr/bin/python3, python3-matplotlib); shared by the two-particle runners."""
+import os
+import subprocess
+import sys
+
+
+def plot(script, dat, png):
+    for py in [sys.executable, "/usr/bin/python3"]:
+        if os.path.exists(py) and subprocess.run([py, "-c", script, dat, png],
+                                                 stderr=subprocess.DEVNULL).returncode == 0:
+            print("wrote " + png)
+            return True
+    print("matplotlib not installed: no " + os.path.basename(png))
+    return False
