@@ -388,8 +388,9 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N material FILE NAME [horizon eps] [Gc value] [micromodulus m] [spacing h] [break
-yes|no] bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h] [break yes|no]
+   bond_coeff N material FILE NAME [horizon eps] [Gc value] [micromodulus m] [spacing h]
+              [break yes|no]
+   bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h] [break yes|no]
    bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h] [break yes|no]
 ------------------------------------------------------------------------- */
 
