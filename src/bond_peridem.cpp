@@ -426,8 +426,8 @@ void BondPeridem::coeff(int narg, char **arg)
     if (haveMaterial) {
       p.micromodulus = haveMicro ? micro : material.micromodulus;
       material.micromodulus = p.micromodulus;
-      // Gc overrides the file's, as horizon does (the grain-shape paper's §6.4 varies only
-      // G_c of its M1); it was silently ignored before (issue 14)
+      // Gc overrides the file's, as horizon does (Bhattacharya & Lipton 2023 §6.4 vary only
+      // G_c of their M1); it used to be ignored without a word
       if (haveGc) {
         material.G_c = Gc;
         origin += fmt::format(", Gc = {}", Gc);
