@@ -320,7 +320,7 @@ void BondPeridem::set_type(int type, const TypeParams &p)
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N material FILE NAME [horizon eps] [micromodulus m] [spacing h]
+   bond_coeff N material FILE NAME [horizon eps] [Gc value] [micromodulus m] [spacing h]
    bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h]
    bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h]
 ------------------------------------------------------------------------- */
@@ -390,7 +390,8 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N material FILE NAME [horizon eps] [micromodulus m] [spacing h] [break yes|no]
+   bond_coeff N material FILE NAME [horizon eps] [Gc value] [micromodulus m] [spacing h]
+              [break yes|no]
    bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h] [break yes|no]
    bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h] [break yes|no]
 ------------------------------------------------------------------------- */
@@ -425,6 +426,12 @@ void BondPeridem::coeff(int narg, char **arg)
     if (haveMaterial) {
       p.micromodulus = haveMicro ? micro : material.micromodulus;
       material.micromodulus = p.micromodulus;
+      // Gc overrides the file's, as horizon does (Bhattacharya & Lipton 2023 §6.4 vary only
+      // G_c of their M1); it used to be ignored without a word
+      if (haveGc) {
+        material.G_c = Gc;
+        origin += fmt::format(", Gc = {}", Gc);
+      }
       p.horizon = eps > 0.0 ? eps : material.horizon;
       if (!(p.horizon > 0.0))
         error->all(FLERR, "{}: {} has no horizon: add horizon to the file or the command", COEFF,

@@ -108,8 +108,12 @@ std::vector<Bond> createBonds(const Polygon &D, const std::vector<Vec2> &x, doub
 
 bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut)
 {
-  return orient2d(cut.a, cut.b, xi) * orient2d(cut.a, cut.b, xj) < 0 &&
-         orient2d(xi, xj, cut.a) * orient2d(xi, xj, cut.b) <= 0;
+  // A node exactly on the cut's line counts as lying on its left (orient2d >= 0), as if
+  // the cut were moved an infinitesimal distance to its right. With strict sides a notch
+  // drawn along a node row (a lattice grain's centre line, Bhattacharya & Lipton 2023
+  // §6.4) cut no bond at all: every bond crossing it has an end node on the line.
+  const bool left_i = orient2d(cut.a, cut.b, xi) >= 0, left_j = orient2d(cut.a, cut.b, xj) >= 0;
+  return left_i != left_j && orient2d(xi, xj, cut.a) * orient2d(xi, xj, cut.b) <= 0;
 }
 
 std::size_t removeBondsCrossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,

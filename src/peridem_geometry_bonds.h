@@ -45,9 +45,11 @@ struct CutSegment {
   Vec2 a, b;
 };
 
-// A bond crosses a cut if its end points lie strictly on opposite sides of the
-// cut's line and the crossing point lies on the closed cut. Bonds that only
-// touch the cut line at an end node, or run along it, are not cut.
+// A bond crosses a cut if its end points lie on opposite sides of the cut's
+// line and the crossing point lies on the closed cut. A node on the line
+// belongs to the left side of a -> b, so a cut along a node row separates the
+// row (kept with the left side) from the nodes right of it; bonds along the
+// line, and bonds from the row to the left side, are kept.
 bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut);
 
 // Removes from `bonds` every bond crossing any cut; works on any bond list

@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
+#include <map>
 
 using namespace peridem;
 
@@ -90,6 +92,73 @@ TEST(GeometryBonds, CutsRemoveBondsAcrossNotch)
   EXPECT_FALSE(bondCrossesCut({-0.5, 0}, {0.5, 0}, {{-1, 0}, {1, 0}}));
   EXPECT_TRUE(bondCrossesCut({0, -1}, {0, 1}, {{-1, 0}, {0, 0}})); // through the tip
   EXPECT_FALSE(bondCrossesCut({0.1, -1}, {0.1, 1}, {{-1, 0}, {0, 0}}));
+}
+
+// Issue 14: a cut drawn along a node row (a lattice grain's centre line, seed §6.4) cut
+// nothing while the row's nodes were on neither side. Now each node belongs to one side
+// (the row to the left of a -> b), so the cut separates the grain.
+TEST(GeometryBonds, CutAlongNodeRowSeparates)
+{
+  const Polygon sq = makeShape("square", {{"side", 1.0}});
+  const double h = 0.05;
+  const Nodes2D n = latticeNodes(sq, h, LatticeOptions{}); // rows at y = j h, one at y = 0
+  const auto all = createBonds(sq, n.x, 3 * h);
+  // connected pieces of a bond list (union-find)
+  auto pieces = [&](const std::vector<Bond> &bonds) {
+    std::vector<std::size_t> up(n.size());
+    for (std::size_t i = 0; i < up.size(); i++) up[i] = i;
+    std::function<std::size_t(std::size_t)> root = [&](std::size_t i) {
+      return up[i] == i ? i : up[i] = root(up[i]);
+    };
+    for (const Bond &b : bonds) up[root(b.first)] = root(b.second);
+    std::map<std::size_t, std::size_t> size;
+    for (std::size_t i = 0; i < up.size(); i++) size[root(i)]++;
+    std::vector<std::size_t> s;
+    for (const auto &kv : size) s.push_back(kv.second);
+    std::sort(s.begin(), s.end());
+    return s;
+  };
+  ASSERT_EQ(pieces(all).size(), 1u);
+  const std::size_t row = 21, above = 10 * row, below = 10 * row;
+  ASSERT_EQ(n.size(), above + row + below);
+
+  // a cut across the whole grain on the row y = 0: two pieces, the row with the left side
+  for (const bool leftToRight : {true, false}) {
+    auto bonds = all;
+    const CutSegment c =
+        leftToRight ? CutSegment{{-0.6, 0.0}, {0.6, 0.0}} : CutSegment{{0.6, 0.0}, {-0.6, 0.0}};
+    removeBondsCrossing(bonds, n.x, {c});
+    EXPECT_EQ(pieces(bonds), (std::vector<std::size_t>{below, above + row}));
+    for (const Bond &b : bonds) {
+      const double y0 = n.x[b.first].y, y1 = n.x[b.second].y;
+      if (leftToRight) // left of a -> b is y > 0: the row stays with the upper half
+        EXPECT_FALSE((y0 < 0) != (y1 < 0));
+      else
+        EXPECT_FALSE((y0 > 0) != (y1 > 0));
+    }
+    // the same bonds as a cut moved a hundred-millionth of a spacing to its right
+    auto shifted = all;
+    const double dy = leftToRight ? -1e-8 * h : 1e-8 * h;
+    removeBondsCrossing(shifted, n.x, {{{c.a.x, dy}, {c.b.x, dy}}});
+    EXPECT_EQ(bonds, shifted);
+  }
+
+  // the seed's notch, from the left edge to the centre along the row: still one piece,
+  // and every bond from a node below the row to a node on or above it that meets the row
+  // left of the tip (x <= 0) is gone; all other bonds are kept
+  auto bonds = all;
+  removeBondsCrossing(bonds, n.x, {{{-0.6, 0.0}, {0.0, 0.0}}});
+  EXPECT_EQ(pieces(bonds).size(), 1u);
+  std::size_t expect_removed = 0;
+  for (const Bond &b : all) {
+    Vec2 p = n.x[b.first], q = n.x[b.second];
+    if (p.y > q.y) std::swap(p, q);
+    if (!(p.y < 0 && q.y >= 0)) continue;
+    const double x0 = p.x + (q.x - p.x) * (0 - p.y) / (q.y - p.y);
+    if (x0 <= 1e-12) expect_removed++;
+  }
+  EXPECT_GT(expect_removed, 0u);
+  EXPECT_EQ(all.size() - bonds.size(), expect_removed);
 }
 
 TEST(GeometryBonds, Shapes3D)
