@@ -54,6 +54,9 @@ foreach(_f ${_peridem_all_sources})
 endforeach()
 
 add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver/post_create_hook.cpp)
+# the chunked bond loop of bond_peridem.cpp vectorises its square roots only
+# without errno (they take sums of squares, never negative): issue 15
+set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem.cpp PROPERTIES COMPILE_OPTIONS -fno-math-errno)
 target_include_directories(peridem PUBLIC ${PROJECT_SOURCE_DIR}/src)
 # after LAMMPS's own include directory, so installed headers win where both exist
 target_include_directories(peridem SYSTEM AFTER PUBLIC ${PERIDEM_LAMMPS_SRC})
