@@ -9,7 +9,7 @@
    in.peri.pmb, session 2). The sums stay locals of the loop, which
    add_bond_force() gets by reference: a store object holding them and f
    cost 8 % of the loop (session 3); these inline functions cost nothing
-   measurable (issue 15). f is indexed flat from f[0], as LAMMPS's OPT
+   measurable (session 4). f is indexed flat from f[0], as LAMMPS's OPT
    styles do.
 ------------------------------------------------------------------------- */
 
