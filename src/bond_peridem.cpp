@@ -26,6 +26,7 @@
 #include "lmp_peridem_material.h"
 #include "lmp_peridem_parse.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <cstring>
@@ -90,23 +91,101 @@ void BondPeridem::compute(int eflag, int vflag)
   if (neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(cache.size()) ||
       neighbor->bondlist != cache_bondlist)
     fill_cache();
+  if (neighbor->nbondlist == 0) return;
+  // steps with energy or virial, and LAMMPS's break order, go one bond at a
+  // time; the others in chunks (the same forces, to the bit)
+  if (evflag || (break_flag && break_after_force))
+    compute_one_by_one(eflag);
+  else
+    compute_chunked();
+}
 
-  int **bondlist = neighbor->bondlist;
+/* ----------------------------------------------------------------------
+   the force loop of most steps: bonds in chunks of CHUNK list
+   entries, in three passes. (a) gathers the separations x1 - x2 into short
+   arrays; (b) computes |y|, the stretch and F/|y| for the whole chunk
+   without branches, so that the compiler vectorises the square roots and
+   divisions (SSE2: two bonds per instruction; this file is compiled with
+   -fno-math-errno, cmake/PeridemLAMMPS.cmake, without which GCC keeps each
+   sqrt scalar for errno); (c) breaks bonds and adds the forces in list
+   order, summing those on i1 in registers while i1 repeats (LAMMPS lists
+   the bonds of one atom one after the other). Each force is the same
+   expression as in compute_one_by_one(), so the results are the same to
+   the bit (tested: chunked_equals_one_by_one).
+------------------------------------------------------------------------- */
+
+void BondPeridem::compute_chunked()
+{
+  constexpr int CHUNK = 64;
   const int nbondlist = neighbor->nbondlist;
-  if (nbondlist == 0) return;
-  // LAMMPS's per-atom arrays are contiguous (memory->create): index them
-  // from the first row, as LAMMPS's OPT styles do, saving a pointer load
+  // LAMMPS's per-atom arrays and the bond list are contiguous
+  // (memory->create): index them flat, as LAMMPS's OPT styles do
+  const int *bl = neighbor->bondlist[0];
   const double *x = atom->x[0];
   double *f = atom->f[0];
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
-  const BondCache *bc = cache.data();
+  const double *inv_r0 = cache.inv_r0.data();
+  const double *kb = cache.k.data();
+
+  alignas(64) double dx[CHUNK], dy[CHUNK], dz[CHUNK], rv[CHUNK], sv[CHUNK], fb[CHUNK];
+  int current = -1;
+  double fsum[3] = {0.0, 0.0, 0.0};
+
+  for (int n0 = 0; n0 < nbondlist; n0 += CHUNK) {
+    const int m = std::min(CHUNK, nbondlist - n0);
+    const int *b = bl + 3 * n0;
+    // (a) gather
+    for (int j = 0; j < m; j++) {
+      const double *x1 = x + 3 * b[3 * j], *x2 = x + 3 * b[3 * j + 1];
+      dx[j] = x1[0] - x2[0];
+      dy[j] = x1[1] - x2[1];
+      dz[j] = x1[2] - x2[2];
+    }
+    // (b) no branches: vectorised. An entry with r = 0 (coinciding nodes)
+    // gets an infinite or undefined fb here, and no force in (c)
+    const double *ir = inv_r0 + n0, *kk = kb + n0;
+    for (int j = 0; j < m; j++) {
+      const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
+      rv[j] = r;
+      sv[j] = peridem::stretch_from_inverse(r, ir[j]);
+      fb[j] = -peridem::bond_force_per_length(kk[j], ir[j], 1.0 / r);
+    }
+    // (c) forces in list order
+    for (int j = 0; j < m; j++) {
+      const int type = b[3 * j + 2];
+      if (type <= 0) continue;
+      const int i1 = b[3 * j], i2 = b[3 * j + 1];
+      if (break_flag && peridem::bond_breaks(sv[j], s0_break[type], breakage)) {
+        break_bond(n0 + j, i1, i2, cache.r0[n0 + j], s0[type]);
+        continue;
+      }
+      const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
+      PERIDEM::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j], dy[j],
+                              dz[j], fbond);
+    }
+  }
+  if (current >= 0) PERIDEM::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+}
+
+/* ----------------------------------------------------------------------
+   one bond at a time, with energy and virial and either break order
+------------------------------------------------------------------------- */
+
+void BondPeridem::compute_one_by_one(int eflag)
+{
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const double *x = atom->x[0];
+  double *f = atom->f[0];
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  const double *r0c = cache.r0.data(), *inv_r0 = cache.inv_r0.data(), *kb = cache.k.data();
   double ebond = 0.0;
 
-  // forces on i1 summed in registers (see lmp_peridem_bond_loop.h); plain
-  // locals here: the store object costs 8 % of this loop (measured)
+  // forces on i1 summed in registers (lmp_peridem_bond_loop.h)
   int current = -1;
-  double fsum0 = 0.0, fsum1 = 0.0, fsum2 = 0.0;
+  double fsum[3] = {0.0, 0.0, 0.0};
 
   for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
@@ -115,12 +194,12 @@ void BondPeridem::compute(int eflag, int vflag)
     const int i2 = bondlist[n][1];
     const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
 
-    const double r0 = bc[n].r0;
+    const double r0 = r0c[n];
     const double delx = x1[0] - x2[0];
     const double dely = x1[1] - x2[1];
     const double delz = x1[2] - x2[2];
     const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
-    const double s = peridem::stretch_from_inverse(r, bc[n].inv_r0);
+    const double s = peridem::stretch_from_inverse(r, inv_r0[n]);
 
     // a bond that breaks now carries no force now, unless the user asked
     // for the order of LAMMPS's peri styles: force first, then break
@@ -133,39 +212,16 @@ void BondPeridem::compute(int eflag, int vflag)
     // F/|y| of bond_force(c, w, s, V_i, V_j), with c w V_i V_j (and the
     // volume factor) in k; a positive force pulls i1 towards i2, and
     // LAMMPS's fbond multiplies x1 - x2
-    const double fbond =
-        r > 0.0 ? -peridem::bond_force_per_length(bc[n].k, bc[n].inv_r0, 1.0 / r) : 0.0;
+    const double fbond = r > 0.0 ? -peridem::bond_force_per_length(kb[n], inv_r0[n], 1.0 / r) : 0.0;
 
-    if (i1 != current) {
-      if (current >= 0) {
-        double *fc = f + 3 * current;
-        fc[0] += fsum0;
-        fc[1] += fsum1;
-        fc[2] += fsum2;
-      }
-      current = i1;
-      fsum0 = fsum1 = fsum2 = 0.0;
-    }
-    fsum0 += delx * fbond;
-    fsum1 += dely * fbond;
-    fsum2 += delz * fbond;
-    if (newton_bond || i2 < nlocal) {
-      double *f2 = f + 3 * i2;
-      f2[0] -= delx * fbond;
-      f2[1] -= dely * fbond;
-      f2[2] -= delz * fbond;
-    }
+    PERIDEM::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely, delz,
+                            fbond);
 
-    if (eflag) ebond = peridem::bond_energy(bc[n].k, 1.0, s, r0, 1.0, 1.0);
+    if (eflag) ebond = peridem::bond_energy(kb[n], 1.0, s, r0, 1.0, 1.0);
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
     if (breaks) break_bond(n, i1, i2, r0, s0[type]);
   }
-  if (current >= 0) {
-    double *fc = f + 3 * current;
-    fc[0] += fsum0;
-    fc[1] += fsum1;
-    fc[2] += fsum2;
-  }
+  if (current >= 0) PERIDEM::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -190,14 +246,16 @@ void BondPeridem::fill_cache()
 {
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
-  cache.resize(nbondlist);
+  cache.r0.assign(nbondlist, 0.0);
+  cache.inv_r0.assign(nbondlist, 0.0);
+  cache.k.assign(nbondlist, 0.0);
   for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
     if (type <= 0) continue;
     const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-    cache[n].r0 = reference_length(i1, i2);
-    cache[n].inv_r0 = 1.0 / cache[n].r0;
-    cache[n].k = bond_stiffness(type, cache[n].r0, i1, i2);
+    cache.r0[n] = reference_length(i1, i2);
+    cache.inv_r0[n] = 1.0 / cache.r0[n];
+    cache.k[n] = bond_stiffness(type, cache.r0[n], i1, i2);
   }
   cache_ncalls = neighbor->ncalls;
   cache_bondlist = bondlist;
@@ -661,5 +719,6 @@ void *BondPeridem::extract(const char *str, int &dim)
 
 double BondPeridem::memory_usage()
 {
-  return Bond::memory_usage() + cache.capacity() * sizeof(BondCache);
+  return Bond::memory_usage() +
+         (cache.r0.capacity() + cache.inv_r0.capacity() + cache.k.capacity()) * sizeof(double);
 }

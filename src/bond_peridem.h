@@ -88,15 +88,20 @@ class BondPeridem : public Bond {
   class FixPeridemBonds *bonds_fix;
 
   // per entry of LAMMPS's bond list, valid until it is rebuilt
+  // per entry of the bond list, as separate arrays (the force loop streams
+  // inv_r0 and k only; r0 serves breakage and energy)
   struct BondCache {
-    double r0;     // reference length |xi|
-    double inv_r0; // 1/|xi|
-    double k;      // c w(|xi|) V_i V_j, times the volume factor
+    std::vector<double> r0;     // reference length |xi|
+    std::vector<double> inv_r0; // 1/|xi|
+    std::vector<double> k;      // c w(|xi|) V_i V_j, times the volume factor
+    std::size_t size() const { return r0.size(); }
   };
-  std::vector<BondCache> cache;
+  BondCache cache;
   bigint cache_ncalls;
   int **cache_bondlist;
   void fill_cache();
+  void compute_one_by_one(int eflag);
+  void compute_chunked();
   double bond_stiffness(int type, double r0, int i1, int i2) const;
 
   void allocate();

@@ -20,8 +20,8 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
-#include "lmp_peridem_restart.h"
 #include "lmp_peridem_bond_loop.h"
+#include "lmp_peridem_restart.h"
 #include "force.h"
 #include "memory.h"
 #include "neighbor.h"
@@ -227,7 +227,9 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 
   // (3) force pass
   const peridem::LpsConstants *lc = constants.data();
-  PERIDEM::BondForceStore store(f); // forces on i1 summed in registers
+  // forces on i1 summed in plain locals while i1 repeats (lmp_peridem_bond_loop.h)
+  int current = -1;
+  double fsum[3] = {0.0, 0.0, 0.0};
   double ebond = 0.0;
   for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
@@ -241,7 +243,8 @@ void BondPeridemLPS::compute(int eflag, int vflag)
                                              theta_over_m[i2], inv_m[i1], inv_m[i2]);
     // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
     const double fbond = r > 0.0 ? -F / r : 0.0;
-    store.add(i1, i2, newton_bond || i2 < nlocal, delx, dely, delz, fbond);
+    PERIDEM::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely, delz,
+                            fbond);
     if (evflag) {
       if (eflag)
         ebond = peridem::lps_bond_energy(lc[type], bc[n].k, bc[n].r0, e, theta_of(i1), theta_of(i2),
@@ -252,6 +255,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
         peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage))
       break_bond(n, i1, i2, bc[n].r0, s0[type]);
   }
+  if (current >= 0) PERIDEM::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
 
 /* ----------------------------------------------------------------------

@@ -2,8 +2,13 @@
 # Benchmark: LAMMPS's examples/peri/in.peri.pmb (3487 nodes, horizon 3
 # lattice spacings, 1000 steps, dumps off) with stock pair_style peri/pmb,
 # and the same problem with bond_style peridem (examples/peri-impact), on 1
-# and 2 MPI ranks, in one run. Prints a markdown table for the README.
+# and 2 MPI ranks, in one run, interleaved (stock, ours, base, stock, ...),
+# best of `repeats`. Prints a markdown table: time per step (wall time, and
+# CPU time = wall x LAMMPS's "CPU use": the machine is shared), speed-up,
+# bond updates/s, ns per bond of the bond style's own time (Bond section),
+# memory per node and per bond.
 # Usage: bench/peri-pmb/run_bench.sh [build dir] [repeats]
+# PERIDEM_BENCH_BASE: another build (e.g. /work/main/build), run side by side.
 # PERIDEM_BENCH_STOCK, PERIDEM_BENCH_EXAMPLE (folder/input under examples/)
 # and PERIDEM_BENCH_STYLES ("stock name|our name") select another pair of
 # runs (bench/peri-lps/run_bench.sh).
@@ -11,46 +16,59 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$(realpath "${1:-$here/build}")"
 repeats="${2:-3}"
+base=${PERIDEM_BENCH_BASE:-}
 source "$here/unittest/scripts/mpi_env.sh"
 stock_input=${PERIDEM_BENCH_STOCK:-/usr/share/lammps/examples/peri/in.peri.pmb}
 example=${PERIDEM_BENCH_EXAMPLE:-peri-impact/in.peri_impact}
 IFS='|' read -r stock_name our_name <<< "${PERIDEM_BENCH_STYLES:-peri/pmb|bond_style peridem}"
 work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
 cp "$here/examples/$(dirname "$example")"/* "$work/"
 cp "$stock_input" "$work/in.stock"
 cp "$here/examples/$example" "$work/in.peridem"
 cd "$work"
 
-# best of $repeats: loop time, memory per rank (MB, max), bonds (for ours)
-measure() { # np input
-  local best=1e30 mem=0
-  for _ in $(seq "$repeats"); do
-    mpirun -np "$1" "$build/lmp_peridem" -in "$2" -log log.bench -screen none
-    local t
-    t=$(awk '/^Loop time of/ {s += $4} END {print s}' log.bench) # all runs of the input
-    best=$(python3 -c "print(min($best, $t))")
-    mem=$(awk '/Per MPI rank memory allocation/ {print $(NF-1)}' log.bench | tail -n 1)
-  done
-  echo "$best $mem"
+# one run: loop time, CPU fraction, Bond (or Pair for stock) section, memory (MB, max)
+run_one() { # np build input
+  mpirun -np "$1" "$2/lmp_peridem" -in "$3" -log log.bench -screen none
+  awk '/^Loop time of/ {s += $4} /% CPU use/ {c = $1 + 0}
+       /^Bond +\|/ {b += $5} /^Pair +\|/ {p += $5}
+       /Per MPI rank memory allocation/ {m = $(NF-1)}
+       END {print s, c / 100, (b > 0 ? b : p), m}' log.bench
 }
 
 bonds=$(mpirun -np 1 "$build/lmp_peridem" -in in.peridem -log log.bonds -screen none; \
         awk '/Added .* bonds/ {print $2}' log.bonds)
 natoms=3487
 steps=1000
-echo "| ranks | stock $stock_name: s/step | $our_name: s/step | speed-up | bond updates/s | memory/node (stock, ours) |"
-echo "|---|---|---|---|---|---|"
+runs=("stock|$build|in.stock" "this|$build|in.peridem")
+[ -n "$base" ] && runs+=("base|$(realpath "$base")|in.peridem")
+echo "| ranks | run | wall ms/step (best) | CPU ms/step | speed-up vs stock (wall, CPU) | bond updates/s | ns/bond (bond time) | KiB/node | bytes/bond |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for np in 1 2; do
-  read -r ts ms < <(measure "$np" in.stock)
-  read -r to mo < <(measure "$np" in.peridem)
-  python3 - "$np" "$ts" "$to" "$ms" "$mo" "$bonds" "$natoms" "$steps" <<'PY'
+  declare -A best=()
+  for _ in $(seq "$repeats"); do
+    for r in "${runs[@]}"; do
+      IFS='|' read -r name bd input <<< "$r"
+      line=$(run_one "$np" "$bd" "$input")
+      if [ -z "${best[$name]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$name]%% *} else 1)"; then
+        best[$name]="$line"
+      fi
+    done
+  done
+  for r in "${runs[@]}"; do
+    IFS='|' read -r name bd input <<< "$r"
+    python3 - "$np" "$name" "$bonds" "$natoms" "$steps" ${best[stock]} ${best[$name]} <<'PY'
 import sys
-np_, ts, to, ms, mo, bonds, natoms, steps = sys.argv[1:]
-ts, to, ms, mo = float(ts), float(to), float(ms), float(mo)
+np_, name, bonds, natoms, steps = sys.argv[1:6]
+ts, cs, _, _ = map(float, sys.argv[6:10])
+t, c, bt, mem = map(float, sys.argv[10:14])
 bonds, natoms, steps, np_ = int(bonds), int(natoms), int(steps), int(np_)
-per_node = lambda mb: mb * np_ * 1024 * 1024 / natoms / 1024
-print(f"| {np_} | {ts/steps*1e3:.2f} ms | {to/steps*1e3:.2f} ms | {ts/to:.1f}x | "
-      f"{bonds*steps/to:.3g} | {per_node(ms):.1f} KiB, {per_node(mo):.1f} KiB |")
+kib = mem * np_ * 1024 / natoms
+bpb = mem * np_ * 1024 * 1024 / bonds
+print(f"| {np_} | {name} | {t/steps*1e3:.2f} | {t*c/steps*1e3:.2f} | {ts/t:.2f}x, {ts*cs/(t*c):.2f}x | "
+      f"{bonds*steps/t:.3g} | {bt/(bonds*steps)*np_*1e9:.2f} | {kib:.1f} | {bpb:.0f} |")
 PY
+  done
+  unset best
 done
-rm -rf "$work"

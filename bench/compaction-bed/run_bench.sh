@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# Benchmark: the loaded compaction bed (in.compaction, in.timed) with
+# bond_style peridem and peridem/lps on 1 and 2 MPI ranks, side by side with
+# the peri/pmb yardstick (LAMMPS's examples/peri/in.peri.pmb, 1 rank) and,
+# when PERIDEM_BENCH_BASE names another build (e.g. main's), with that build
+# on the same restart, interleaved. Prints one markdown table: time per step
+# (best wall time, and CPU time of rank 0: the machine is shared),
+# node-steps/s (wall; and per second of CPU time per rank), bond updates/s,
+# contact pair evaluations/s (neighbour pairs x steps / loop time), the
+# shares of the CPU time of Bond, Modify (walls, integration, gravity),
+# Neigh, Pair and Comm (timer full), memory per node and per bond, and the
+# per-core node-steps/s scaled to the yardstick of the issue (peri/pmb at
+# 7.15 ms per step, session 2, idle): measured x (peri/pmb now / 7.15 ms).
+#
+# Usage: bench/compaction-bed/run_bench.sh [build dir] [repeats] [steps] [grains...]
+#   default: build, 3 repeats, 200 steps, 500 grains
+#   PERIDEM_BENCH_BONDS="peridem lps", PERIDEM_BENCH_RANKS="1 2",
+#   PERIDEM_BENCH_WARMUP=1000 (steps of the warm-up, once per bed),
+#   PERIDEM_BENCH_BASE=/work/main/build (previous build, side by side)
+# Cost against the number of grains:
+#   PERIDEM_BENCH_RANKS=1 PERIDEM_BENCH_BONDS=peridem PERIDEM_BENCH_WARMUP=300 \
+#     bench/compaction-bed/run_bench.sh build 3 100 50 200 500 2000
+set -euo pipefail
+here="$(cd "$(dirname "$0")/../.." && pwd)"
+build="$(realpath "${1:-$here/build}")"
+repeats="${2:-3}"
+steps="${3:-200}"
+shift $(( $# < 3 ? $# : 3 ))
+grains=("${@:-500}")
+[ ${#grains[@]} -eq 0 ] && grains=(500)
+bonds_list=${PERIDEM_BENCH_BONDS:-peridem lps}
+ranks_list=${PERIDEM_BENCH_RANKS:-1 2}
+warmup=${PERIDEM_BENCH_WARMUP:-1000}
+base=${PERIDEM_BENCH_BASE:-}
+source "$here/unittest/scripts/mpi_env.sh"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cp "$here/bench/compaction-bed/in.compaction" "$here/bench/compaction-bed/in.timed" "$work/"
+cp /usr/share/lammps/examples/peri/in.peri.pmb "$work/in.stock"
+cd "$work"
+pot="$here/potentials"
+
+# one run: loop (wall), CPU fraction, then the CPU time of the sections Pair
+# Bond Neigh Comm Modify (timer full: wall x %CPU), neighbours, atoms, bonds, memory
+parse() {
+  awk 'function cpu(line) {return $5 * $(NF-2) / 100}
+       /^Loop time of/ {loop=$4; nat=$(NF-1)} /% CPU use/ {c=$1+0}
+       /^Pair +\|/ {pair=cpu()} /^Bond +\|/ {bond=cpu()} /^Neigh +\|/ {neigh=cpu()}
+       /^Comm +\|/ {comm=cpu()} /^Modify +\|/ {mod=cpu()} /^Total # of neighbors/ {nb=$NF}
+       /Per MPI rank memory allocation/ {mem=$(NF-1)} /^ +[0-9]+ +[0-9]+ +[0-9]+ / {nbond=$3}
+       END {print loop, c/100, pair+0, bond+0, neigh+0, comm+0, mod+0, nb+0, nat, nbond+0, mem}' "$1"
+}
+
+# the yardstick (CPU time), best of $repeats
+stock_best=1e30
+for _ in $(seq "$repeats"); do
+  mpirun -np 1 "$build/lmp_peridem" -in in.stock -log log.stock -screen none
+  t=$(awk '/^Loop time of/ {l=$4} /% CPU use/ {c=$1} END {print l * c / 100}' log.stock) # CPU time
+  stock_best=$(python3 -c "print(min($stock_best, $t))")
+done
+
+echo "peri/pmb yardstick (in.peri.pmb, 1 rank, CPU time): $(python3 -c "print(f'{$stock_best:.3f} ms/step (session 2, idle: 7.15)')")"
+echo
+echo "| build | grains | bond style | ranks | nodes | bonds | ms/step (wall, best) | ms/step (CPU) | node-steps/s (wall) | node-steps/s (CPU, per core) | bond updates/s | contact pairs/s | Bond % | Modify % | Neigh % | Pair % | Comm % | KiB/node | B/bond | node-steps/s per core, scaled |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+for n in "${grains[@]}"; do
+  for b in $bonds_list; do
+    mpirun -np 1 "$build/lmp_peridem" -in in.compaction -var potentials "$pot" -var ngrains "$n" \
+      -var bond "$b" -var warmup "$warmup" -var restart "bed_${n}_$b.restart" -log "log.warm_${n}_$b" -screen none
+    for np in $ranks_list; do
+      builds=("$build")
+      [ -n "$base" ] && builds+=("$(realpath "$base")")
+      declare -A best=()
+      for _ in $(seq "$repeats"); do
+        for bd in "${builds[@]}"; do
+          mpirun -np "$np" "$bd/lmp_peridem" -in in.timed -var potentials "$pot" -var steps "$steps" \
+            -var restart "bed_${n}_$b.restart" -log log.t -screen none
+          line=$(parse log.t)
+          if [ -z "${best[$bd]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$bd]%% *} else 1)"; then
+            best[$bd]="$line"
+          fi
+        done
+      done
+      for bd in "${builds[@]}"; do
+        name=$([ "$bd" = "$build" ] && echo this || echo base)
+        python3 - "$name" "$n" "$b" "$np" "$steps" "$stock_best" ${best[$bd]} <<'PY'
+import sys
+name, n, b, np_, steps, stock = sys.argv[1:7]
+loop, cpu, pair, bond, neigh, comm, mod, nb, nat, nbond, mem = map(float, sys.argv[7:])
+steps, np_, stock = int(steps), int(np_), float(stock)
+per = loop / steps
+cpu_total = loop * cpu  # rank 0's CPU time of the loop
+ns = nat * steps / loop  # node-steps per second of wall time
+nsc = nat * steps / cpu_total / np_  # per second of CPU time per rank (one core)
+share = lambda t: 100 * t / cpu_total
+kib = mem * np_ * 1024 / nat
+bpb = mem * np_ * 1024 * 1024 / nbond
+scaled = nsc * (stock / 1000) / 7.15e-3  # in.peri.pmb: 1000 steps; session 2: 7.15 ms/step
+print(f"| {name} | {n} | {b} | {np_} | {int(nat):,} | {int(nbond):,} | {per*1e3:.2f} | {cpu_total/steps*1e3:.2f} | "
+      f"{ns:.3g} | {nsc:.3g} | {nbond*steps/loop:.3g} | {nb*steps/loop:.3g} | {share(bond):.1f} | "
+      f"{share(mod):.1f} | {share(neigh):.1f} | {share(pair):.1f} | {share(comm):.1f} | {kib:.1f} | {bpb:.0f} | {scaled:.3g} |")
+PY
+      done
+      unset best
+    done
+  done
+done
