@@ -1,6 +1,6 @@
 // Benchmark: build 500 grains of ~150 nodes each (lattice nodes + bonds with
-// seed §5 pruning), as the grain-creation command will do (issue 4
-// "Performance"). Not a unit test; build by hand, e.g. from the repo root:
+// Bhattacharya & Lipton 2023, §5 pruning), as the grain-creation command
+// does. Not a unit test; build by hand, e.g. from the repo root:
 //   g++ -O2 -std=c++17 -Isrc bench/bench_geometry_bonds.cpp src/peridem_geometry_*.cpp \
 //       -o /tmp/bench_geometry_bonds && /tmp/bench_geometry_bonds
 #include "peridem_geometry_grain.h"

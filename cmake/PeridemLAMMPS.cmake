@@ -1,14 +1,17 @@
 # LAMMPS-facing part of the build: the styles (libperidem.so), the lmp_peridem
 # driver and the header checks against the matching LAMMPS source tree.
 
-set(PERIDEM_LAMMPS_VERSION 20210929)
+# Supported LAMMPS versions: 29 Sep 2021 (Debian bookworm's liblammps-dev, the default) and
+# 4 Feb 2025 (built from source by scripts/build_lammps_2025.sh; LAMMPS_DIR points at it).
+set(PERIDEM_LAMMPS_VERSIONS 20210929 20250204)
 set(MPI_CXX_SKIP_MPICXX ON CACHE BOOL "Do not link the deprecated MPI C++ bindings")
 find_package(MPI REQUIRED COMPONENTS C CXX)
-find_package(LAMMPS ${PERIDEM_LAMMPS_VERSION} EXACT CONFIG)
-if(NOT LAMMPS_FOUND)
+find_package(LAMMPS CONFIG)
+if(NOT LAMMPS_FOUND OR NOT LAMMPS_VERSION IN_LIST PERIDEM_LAMMPS_VERSIONS)
   message(FATAL_ERROR
-    "PERIDEM needs LAMMPS ${PERIDEM_LAMMPS_VERSION} (Debian bookworm: liblammps-dev). "
-    "Run scripts/setup-debian.sh, or point LAMMPS_DIR at a LAMMPSConfig.cmake of that version.")
+    "PERIDEM needs LAMMPS 20210929 (Debian bookworm: liblammps-dev) or 20250204 "
+    "(found: '${LAMMPS_VERSION}'). Run scripts/setup-debian.sh, or point LAMMPS_DIR at the "
+    "LAMMPSConfig.cmake of a supported version (scripts/build_lammps_2025.sh builds 20250204).")
 endif()
 
 # The installed headers are incomplete (no fmt/, neigh_request.h, atom_vec.h, ...):
@@ -22,7 +25,7 @@ foreach(_h fmt/format.h atom_vec.h neigh_request.h math_const.h version.h pointe
   if(NOT EXISTS "${PERIDEM_LAMMPS_SRC}/${_h}")
     message(FATAL_ERROR
       "PERIDEM_LAMMPS_SRC='${PERIDEM_LAMMPS_SRC}' has no ${_h}. Set -DPERIDEM_LAMMPS_SRC=<lammps>/src "
-      "to the source tree of LAMMPS ${PERIDEM_LAMMPS_VERSION} (scripts/setup-debian.sh fetches it).")
+      "to the source tree of LAMMPS ${LAMMPS_VERSION} (scripts/setup-debian.sh fetches 20210929).")
   endif()
 endforeach()
 
@@ -53,12 +56,14 @@ foreach(_f ${_peridem_all_sources})
   endif()
 endforeach()
 
-add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver/post_create_hook.cpp)
-target_include_directories(peridem PUBLIC ${PROJECT_SOURCE_DIR}/src)
+add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver/post_create_hook.cpp
+  ${PROJECT_SOURCE_DIR}/driver/register_driver.cpp)
+target_include_directories(peridem PUBLIC ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/driver)
 # after LAMMPS's own include directory, so installed headers win where both exist
 target_include_directories(peridem SYSTEM AFTER PUBLIC ${PERIDEM_LAMMPS_SRC})
 target_link_libraries(peridem PUBLIC LAMMPS::lammps MPI::MPI_CXX PRIVATE peridem_core ${CMAKE_DL_LIBS})
-target_compile_options(peridem PRIVATE -Wall -Wextra -Wno-unused-parameter)
+target_compile_options(peridem PRIVATE -Wall -Wextra -Wno-unused-parameter
+  $<$<BOOL:${PERIDEM_WERROR}>:-Werror>)
 set_target_properties(peridem PROPERTIES OUTPUT_NAME peridem)
 
 add_executable(lmp_peridem ${PROJECT_SOURCE_DIR}/driver/lmp_peridem.cpp)
@@ -74,7 +79,8 @@ install(TARGETS peridem lmp_peridem)
 # peridemplugin.so"); Debian's LAMMPS has none, see plugin/peridem_plugin.cpp
 add_library(peridemplugin MODULE ${PROJECT_SOURCE_DIR}/plugin/peridem_plugin.cpp)
 target_link_libraries(peridemplugin PRIVATE peridem)
-target_compile_options(peridemplugin PRIVATE -Wall -Wextra -Wno-unused-parameter)
+target_compile_options(peridemplugin PRIVATE -Wall -Wextra -Wno-unused-parameter
+  $<$<BOOL:${PERIDEM_WERROR}>:-Werror>)
 set_target_properties(peridemplugin PROPERTIES PREFIX "" OUTPUT_NAME peridemplugin
   LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
 install(TARGETS peridemplugin LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/lammps/plugins)

@@ -7,17 +7,25 @@
    again after every `clear` (see post_create_hook.cpp).
 ------------------------------------------------------------------------- */
 
-#include "accelerator_kokkos.h"
+#include "exceptions.h"
 #include "input.h"
 #include "lammps.h"
-#include "lmppython.h"
-#include "register_peridem.h"
+#include "library.h"
+#include "register_driver.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <mpi.h>
 
 using namespace LAMMPS_NS;
+
+namespace {
+void finalize()
+{
+  lammps_kokkos_finalize();
+  lammps_python_finalize();
+}
+} // namespace
 
 int main(int argc, char **argv)
 {
@@ -31,16 +39,24 @@ int main(int argc, char **argv)
     peridem_register(lammps);
     lammps->input->file();
     delete lammps;
+  } catch (LAMMPSAbortException &) {
+    // an error on one rank (LAMMPS 2022 and later throw; the message is already printed)
+    finalize();
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  } catch (LAMMPSException &) {
+    // an error on every rank (LAMMPS 2022 and later; 29 Sep 2021 exits inside Error::all)
+    finalize();
+    MPI_Barrier(lammps_comm);
+    MPI_Finalize();
+    exit(1);
   } catch (fmt::format_error &fe) {
     fprintf(stderr, "fmt::format_error: %s\n", fe.what());
-    KokkosLMP::finalize();
-    Python::finalize();
+    finalize();
     MPI_Abort(MPI_COMM_WORLD, 1);
     exit(1);
   }
 
-  KokkosLMP::finalize();
-  Python::finalize();
+  finalize();
   MPI_Barrier(lammps_comm);
   MPI_Finalize();
   return 0;

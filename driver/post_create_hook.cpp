@@ -16,7 +16,7 @@
 
 #include "lammps.h"
 #include "library.h"
-#include "register_peridem.h"
+#include "register_driver.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -18,7 +18,7 @@
 #include "lammps.h"
 #include "version.h"
 
-#include "register_peridem.h"
+#include "register_driver.h"
 
 using namespace LAMMPS_NS;
 

@@ -1,14 +1,16 @@
 /* ----------------------------------------------------------------------
    PERIDEM: peridynamic grains for LAMMPS.
-   atom_style peridem, see doc/atom_style_peridem.md
+   atom_style peridem, see doc/atom_style_peridem.rst
 ------------------------------------------------------------------------- */
 
 #include "atom_vec_peridem.h"
+#include "lmp_peridem_compat.h"
 
 #include "atom.h"
 #include "error.h"
 
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 
@@ -35,18 +37,21 @@ AtomVecPeridem::AtomVecPeridem(LAMMPS *lmp)
 
   // x0 travels with the atom (exchange, restart) and to ghosts (borders):
   // bond styles compute reference bond vectors from the x0 of both nodes.
-  fields_grow = (char *)"molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0";
-  fields_copy = (char *)"molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0";
-  fields_comm = (char *)"";
-  fields_comm_vel = (char *)"";
-  fields_reverse = (char *)"";
-  fields_border = (char *)"molecule rmass vfrac x0";
-  fields_border_vel = (char *)"molecule rmass vfrac x0";
-  fields_exchange = (char *)"molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0";
-  fields_restart = (char *)"molecule num_bond bond_type bond_atom rmass vfrac x0";
-  fields_create = (char *)"molecule num_bond nspecial rmass vfrac x0";
-  fields_data_atom = (char *)"id molecule type vfrac rmass x x0";
-  fields_data_vel = (char *)"id v";
+  PERIDEM::set_fields(fields_grow,
+                      "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  PERIDEM::set_fields(fields_copy,
+                      "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  PERIDEM::set_fields(fields_comm, "");
+  PERIDEM::set_fields(fields_comm_vel, "");
+  PERIDEM::set_fields(fields_reverse, "");
+  PERIDEM::set_fields(fields_border, "molecule rmass vfrac x0");
+  PERIDEM::set_fields(fields_border_vel, "molecule rmass vfrac x0");
+  PERIDEM::set_fields(fields_exchange,
+                      "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  PERIDEM::set_fields(fields_restart, "molecule num_bond bond_type bond_atom rmass vfrac x0");
+  PERIDEM::set_fields(fields_create, "molecule num_bond nspecial rmass vfrac x0");
+  PERIDEM::set_fields(fields_data_atom, "id molecule type vfrac rmass x x0");
+  PERIDEM::set_fields(fields_data_vel, "id v");
 
   setup_fields();
 }
@@ -161,10 +166,11 @@ void AtomVecPeridem::unpack_restart_init(int ilocal)
    compute property/atom names: vfrac, x0x, x0y, x0z
 ------------------------------------------------------------------------- */
 
-int AtomVecPeridem::property_atom(char *name)
+int AtomVecPeridem::property_atom(PERIDEM::PropertyAtomName name)
 {
+  const std::string word(name);
   for (int i = 0; i < num_properties; i++)
-    if (strcmp(name, property_names[i]) == 0) return i;
+    if (word == property_names[i]) return i;
   return -1;
 }
 

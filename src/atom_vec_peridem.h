@@ -13,6 +13,7 @@ AtomStyle(peridem,AtomVecPeridem);
 #define LMP_ATOM_VEC_PERIDEM_H
 
 #include "atom_vec.h"
+#include "lmp_peridem_compat.h"
 
 namespace LAMMPS_NS {
 
@@ -34,7 +35,7 @@ class AtomVecPeridem : public AtomVec {
   void pack_restart_pre(int) override;
   void pack_restart_post(int) override;
   void unpack_restart_init(int) override;
-  int property_atom(char *) override;
+  int property_atom(PERIDEM::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 
  private:

@@ -1,11 +1,12 @@
 /* ----------------------------------------------------------------------
    PERIDEM: bond_style peridem, bond-based peridynamics with breakage.
 
-   The physics lives in peridem_bond_law.h (grain-shape seed eq. 3.2,
+   The physics lives in peridem_bond_law.h (Bhattacharya & Lipton 2023, eq. 3.2,
    Table 1, §3.1); this file applies it to LAMMPS's bond list.
 ------------------------------------------------------------------------- */
 
 #include "bond_peridem.h"
+#include "lmp_peridem_citations.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -44,6 +45,7 @@ BondPeridem::BondPeridem(LAMMPS *lmp)
       break_after_force(0), volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr),
       cache_ncalls(-1), cache_bondlist(nullptr)
 {
+  PERIDEM::cite_grain_shape(lmp);
   writedata = 1;
 }
 
@@ -77,7 +79,7 @@ double BondPeridem::reference_length(int i1, int i2) const
 }
 
 /* ----------------------------------------------------------------------
-   F = c w(|xi|) s V_i V_j along the current bond (seed eq. 3.2 times the
+   F = c w(|xi|) s V_i V_j along the current bond (Bhattacharya & Lipton 2023, eq. 3.2 times the
    nodal volumes); the bond breaks for good once s > s0 (§3.1)
 ------------------------------------------------------------------------- */
 

@@ -43,7 +43,7 @@ class BondPeridem : public Bond {
  protected:
   // the coefficients of one bond type, as bond_coeff derives them
   struct TypeParams {
-    double c = 0.0;       // spring constant c_w (grain-shape seed eq. 3.2, Table 1)
+    double c = 0.0;       // spring constant c_w (Bhattacharya & Lipton 2023, eq. 3.2, Table 1)
     double s0 = 0.0;      // critical stretch
     double horizon = 0.0; // eps: bonds are no longer than this
     double spacing = 0.0; // node spacing h for the volume correction (0: not given)

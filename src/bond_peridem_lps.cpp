@@ -13,6 +13,7 @@
 ------------------------------------------------------------------------- */
 
 #include "bond_peridem_lps.h"
+#include "lmp_peridem_citations.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -46,6 +47,7 @@ BondPeridemLPS::BondPeridemLPS(LAMMPS *lmp)
       plane(peridem::LpsPlane::PlaneStrain), dfac(3.0), sum(nullptr), theta_over_m(nullptr),
       inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1)
 {
+  PERIDEM::cite_peridem(lmp);
 }
 
 BondPeridemLPS::~BondPeridemLPS()
@@ -118,7 +120,7 @@ void BondPeridemLPS::fill_lps_cache()
 }
 
 /* ----------------------------------------------------------------------
-   m_i = sum_j omega beta r^2 V_j over the intact bonds ([JDBL] eq. 8), in
+   m_i = sum_j omega beta r^2 V_j over the intact bonds (Jha et al. 2021, eq. 8), in
    the reference configuration, once per node: kept by fix peridem/bonds
    through migration and restarts, so that later breakage lowers theta but
    not m (as LAMMPS peri/lps's wvolume). A node without bonds (m = 0) is
@@ -205,7 +207,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
     if (current >= 0) sum[current] += acc;
   }
 
-  // (2) theta_i = (d/m_i) sum ([JDBL] eq. 34), complete on owners and ghosts
+  // (2) theta_i = (d/m_i) sum (Jha et al. 2021, eq. 34), complete on owners and ghosts
   if (newton_bond) bonds_fix->reverse_sum(sum);
   const double *m = bonds_fix->weighted_volume();
   for (int i = 0; i < nlocal; i++) {
@@ -322,7 +324,7 @@ void BondPeridemLPS::coeff(int narg, char **arg)
     infl = PERIDEM::choice(lmp, COEFF, "influence", a.influence,
                            {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
   try {
-    // [JDBL] eq. 10 (Zhu & Zhao's 3D LPS value; used in 2D too, as the paper does)
+    // Jha et al. 2021, eq. 10 (Zhu & Zhao's 3D LPS value; used in 2D too, as the paper does)
     s0val = a.haveGc ? peridem::lps_critical_stretch(K, G, a.Gc, eps) : a.s0;
     peridem::lps_constants(domain->dimension, plane, K, G); // validates K, G
   } catch (peridem::ParameterError &e) {

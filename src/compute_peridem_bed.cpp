@@ -2,10 +2,10 @@
    PERIDEM: compute peridem/bed, measures of a bed of grains in a
    container for thermo and variables.
 
-   Volume fraction (grain-shape seed §7.3-7.4): the grains' volume over the
+   Volume fraction (Bhattacharya & Lipton 2023, §7.3-7.4): the grains' volume over the
    container's volume, the container being the region's lateral extent
    times the height from the region's bottom to the top (the settled bed's
-   surface in §7.3, the moving top wall l (h - v t) in §7.4). The seed's
+   surface in §7.3, the moving top wall l (h - v t) in §7.4). Bhattacharya & Lipton's (2023)
    ring-grain fraction 0.92 (Table 3) exceeds the densest disk packing
    (0.907), so there the grain volume includes the holes (the excluded
    volume of §7.4.2): both are reported, the second with the hole area of
@@ -13,6 +13,7 @@
 ------------------------------------------------------------------------- */
 
 #include "compute_peridem_bed.h"
+#include "lmp_peridem_compat.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -20,6 +21,7 @@
 #include "error.h"
 #include "input.h"
 #include "lmp_peridem_grains.h"
+#include "math_const.h"
 #include "region.h"
 #include "update.h"
 #include "variable.h"
@@ -31,6 +33,7 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 
 namespace {
 const char *const STYLE = "compute peridem/bed";
@@ -88,9 +91,8 @@ ComputePeridemBed::~ComputePeridemBed()
 
 void ComputePeridemBed::init()
 {
-  const int iregion = domain->find_region(id_region);
-  if (iregion < 0) error->all(FLERR, "{}: region {} does not exist", STYLE, id_region);
-  Region *region = domain->regions[iregion];
+  Region *region = PERIDEM::find_region(domain, id_region);
+  if (!region) error->all(FLERR, "{}: region {} does not exist", STYLE, id_region);
   if (!region->bboxflag)
     error->all(FLERR, "{}: region {} has no bounding box to serve as the container", STYLE,
                id_region);
@@ -165,7 +167,7 @@ void ComputePeridemBed::compute_vector()
   double w = bin_width;
   if (w <= 0.0 && ngrains > 0) {
     const double v = vgrain / ngrains;
-    w = domain->dimension == 2 ? 2.0 * std::sqrt(v / M_PI) : std::cbrt(6.0 * v / M_PI);
+    w = domain->dimension == 2 ? 2.0 * std::sqrt(v / MY_PI) : std::cbrt(6.0 * v / MY_PI);
   }
   int nbin[2] = {1, 1};
   for (int d = 0; d < nlat; d++)

@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
    PERIDEM: compute peridem/damage.
 
-   Per node (grain-shape seed §3.1, PeriDEM seed eq. 14):
+   Per node (Bhattacharya & Lipton 2023, §3.1, Jha et al. 2021, eq. 14):
      phi = broken / reference bonds of the node
      Z   = max over the node's reference bonds of |u_j - u_i| / |xi| / s0
    per grain: the mean of phi over the grain's nodes; bulk damage: the mean
@@ -14,6 +14,7 @@
 ------------------------------------------------------------------------- */
 
 #include "compute_peridem_damage.h"
+#include "lmp_peridem_compat.h"
 
 #include "atom.h"
 #include "bond.h"
@@ -140,7 +141,7 @@ void ComputePeridemDamage::count_bonds()
       if (newton_bond || tag[i] < partner) bonds_local[0] += 1.0;
     }
   }
-  if (newton_bond) comm->reverse_comm_compute(this);
+  if (newton_bond) PERIDEM::reverse_comm(comm, this);
 
   const double *nbroken = bonds_fix->broken_count();
   const double *zbroken = bonds_fix->broken_z();

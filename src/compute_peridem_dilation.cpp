@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    PERIDEM: compute peridem/dilation (per-atom theta of bond_style
-   peridem/lps, [JDBL] eq. 34, as computed in the last force evaluation).
+   peridem/lps, Jha et al. 2021, eq. 34, as computed in the last force evaluation).
 ------------------------------------------------------------------------- */
 
 #include "compute_peridem_dilation.h"

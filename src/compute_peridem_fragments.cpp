@@ -2,7 +2,7 @@
    PERIDEM: compute peridem/fragments.
 
    The fragments of a grain are the connected components of its intact
-   bonds (grain-shape seed §6.4 counts 2 and 3 pieces of a notched disk;
+   bonds (Bhattacharya & Lipton 2023, §6.4 counts 2 and 3 pieces of a notched disk;
    the bond-fraction damage of §3.1 does not tell them apart). Broken bonds
    have left the bond arrays (fix peridem/bonds), so every stored bond of
    positive type is intact.
@@ -21,6 +21,7 @@
 ------------------------------------------------------------------------- */
 
 #include "compute_peridem_fragments.h"
+#include "lmp_peridem_compat.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -152,7 +153,7 @@ void ComputePeridemFragments::propagate()
   for (int i = 0; i < nall; i++) root[i] = find_root(root, i);
 
   for (int i = 0; i < nlocal; i++) label[i] = (mask[i] & groupbit) ? double(tag[i]) : 0.0;
-  comm->forward_comm_compute(this);
+  PERIDEM::forward_comm(comm, this);
 
   const double none = std::numeric_limits<double>::max();
   rootmin.assign(nall, none);
@@ -172,10 +173,10 @@ void ComputePeridemFragments::propagate()
     }
     if (force->newton_bond) { // a bond is stored by one of its atoms only
       std::vector<double> before(label, label + nlocal);
-      comm->reverse_comm_compute(this);
+      PERIDEM::reverse_comm(comm, this);
       for (int i = 0; i < nlocal && !changed; i++) changed = label[i] != before[i];
     }
-    comm->forward_comm_compute(this);
+    PERIDEM::forward_comm(comm, this);
     int any = 0;
     MPI_Allreduce(&changed, &any, 1, MPI_INT, MPI_MAX, world);
     if (!any) break;

@@ -11,7 +11,7 @@
 
    Shape: principal axes of the volume-weighted central second moment of
    the node positions (core: peridem::principal_axes). Damage: the mean of
-   the nodes' bond-fraction damage (grain-shape seed §7.4 "particle
+   the nodes' bond-fraction damage (Bhattacharya & Lipton 2023, §7.4 "particle
    damage"), from a compute peridem/damage.
 ------------------------------------------------------------------------- */
 

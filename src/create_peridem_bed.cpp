@@ -3,10 +3,12 @@
 ------------------------------------------------------------------------- */
 
 #include "create_peridem_bed.h"
+#include "lmp_peridem_citations.h"
 
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "math_const.h"
 
 #include "peridem_geometry_packing.h"
 
@@ -16,12 +18,16 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 
 namespace {
 constexpr const char *CMD = "create_peridem_bed";
 }
 
-CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp) {}
+CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp)
+{
+  PERIDEM::cite_grain_shape(lmp);
+}
 
 /* ----------------------------------------------------------------------
    create_peridem_bed FILE count N radius STYLE args seed S keyword value ...
@@ -137,7 +143,8 @@ void CreatePeridemBed::command(int narg, char **arg)
                                      "R_c/2 (radius " +
                                      std::to_string(dist.smallest()) + ")");
       // jam the security disks in the container inset by R_c/2: after shrinking them by
-      // R_c/2 the grains are >= R_c from each other and from the walls (seed §7.1 step 5)
+      // R_c/2 the grains are >= R_c from each other and from the walls (Bhattacharya & Lipton 2023,
+      // §7.1 step 5)
       peridem::PackingOptions opt;
       opt.dimension = dim;
       for (int k = 0; k < 3; k++) {
@@ -163,7 +170,7 @@ void CreatePeridemBed::command(int narg, char **arg)
       for (int k = 0; k < dim; k++) vbed *= bed[k][1] - bed[k][0];
       for (double r : radii) {
         const double s = r - rc / 2;
-        vgrain += dim == 2 ? M_PI * s * s : 4.0 / 3.0 * M_PI * s * s * s;
+        vgrain += dim == 2 ? MY_PI * s * s : 4.0 / 3.0 * MY_PI * s * s * s;
       }
       fprintf(out, "# create_peridem_bed: %lld jammed security %s, seed %lld\n", count,
               dim == 2 ? "disks" : "spheres", seed);

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    PERIDEM: command create_peridem_bed, see doc/create_peridem_bed.rst.
 
-   Generates a shape-agnostic initial bed (grain-shape seed §7-7.1): a
+   Generates a shape-agnostic initial bed (Bhattacharya & Lipton 2023, §7-7.1): a
    jammed packing of security disks (spheres in 3D) with radii from a
    distribution, shrunk by R_c/2, each with a random angle and a label
    drawn with given proportions, written to a file that

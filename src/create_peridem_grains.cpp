@@ -4,6 +4,7 @@
 ------------------------------------------------------------------------- */
 
 #include "create_peridem_grains.h"
+#include "lmp_peridem_citations.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -11,6 +12,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "math_const.h"
 #include "lmp_peridem_material.h"
 #include "lmp_peridem_topology.h"
 
@@ -21,7 +23,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <random>
 #include <sstream>
@@ -29,6 +30,7 @@
 #include <unordered_map>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 
 namespace {
 constexpr const char *CMD = "create_peridem_grains";
@@ -88,8 +90,8 @@ struct Rotation {
   static Rotation random3d(double u1, double u2, double u3)
   {
     const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
-    const double w = b * std::cos(2 * M_PI * u3), x = a * std::sin(2 * M_PI * u2),
-                 y = a * std::cos(2 * M_PI * u2), z = b * std::sin(2 * M_PI * u3);
+    const double w = b * std::cos(2 * MY_PI * u3), x = a * std::sin(2 * MY_PI * u2),
+                 y = a * std::cos(2 * MY_PI * u2), z = b * std::sin(2 * MY_PI * u3);
     Rotation r;
     r.m[0][0] = 1 - 2 * (y * y + z * z);
     r.m[0][1] = 2 * (x * y - w * z);
@@ -178,7 +180,8 @@ class OverlapGrid {
   }
 };
 
-// smallest circle enclosing the outer ring: the grain's security disk (seed §7.1 step 6)
+// smallest circle enclosing the outer ring: the grain's security disk (Bhattacharya & Lipton 2023,
+// §7.1 step 6)
 peridem::EnclosingCircle security_disk(const peridem::Ring &ring)
 {
   std::vector<std::array<double, 2>> pts;
@@ -195,6 +198,8 @@ struct CreatePeridemGrains::Options {
   std::map<std::string, double> params; // shape parameters given
   std::string file;                     // polygon file or mesh
   std::string boundary;                 // polygon that prunes the bonds of a mesh
+  // their text, read once on rank 0 and broadcast (found as LAMMPS finds potential files)
+  std::string file_text, boundary_text;
   std::vector<std::array<double, 3>> at;
   // bed files (create_peridem_bed): per-position radius and angle (radians); empty unless
   // the positions file has those columns
@@ -226,7 +231,10 @@ struct CreatePeridemGrains::Grain {
 
 /* ---------------------------------------------------------------------- */
 
-CreatePeridemGrains::CreatePeridemGrains(LAMMPS *lmp) : Command(lmp) {}
+CreatePeridemGrains::CreatePeridemGrains(LAMMPS *lmp) : Command(lmp)
+{
+  PERIDEM::cite_grain_shape(lmp);
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -242,6 +250,11 @@ void CreatePeridemGrains::command(int narg, char **arg)
   Options opt;
   parse(narg, arg, opt);
   check(opt);
+  if (opt.shape == "gmsh" || opt.shape == "file")
+    opt.file_text =
+        PERIDEM::read_text_file(lmp, CMD, opt.shape == "gmsh" ? "Gmsh" : "polygon", opt.file, true);
+  if (!opt.boundary.empty())
+    opt.boundary_text = PERIDEM::read_text_file(lmp, CMD, "polygon", opt.boundary, true);
   std::vector<const Grain *> per_grain;
   std::map<double, Grain> by_radius; // bed files: one discretization per security-disk radius
   for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
@@ -347,7 +360,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
         if (o.rotate_seed <= 0) error->all(FLERR, "{}: rotate random seed must be > 0", CMD);
         iarg += 2;
       } else {
-        o.angle = utils::numeric(FLERR, arg[iarg++], false, lmp) * M_PI / 180.0;
+        o.angle = utils::numeric(FLERR, arg[iarg++], false, lmp) * MY_PI / 180.0;
       }
     } else if (key == "axis") {
       need(3, "axis");
@@ -488,7 +501,8 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
 {
   try {
     if (o.shape == "gmsh") {
-      peridem::Mesh2D mesh = peridem::readGmshMesh(o.file);
+      std::istringstream mesh_text(o.file_text);
+      peridem::Mesh2D mesh = peridem::parseGmshMesh(mesh_text, o.file);
       double scale = o.scale;
       peridem::Vec2 c;
       if (o.fit_radius > 0.0) { // centre of the security disk, diameter matched
@@ -510,7 +524,8 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
       for (auto &v : mesh.vertices) v = v - c;
       peridem::Polygon boundary;
       if (!o.boundary.empty()) {
-        boundary = peridem::readPolygonFile(o.boundary);
+        std::istringstream boundary_text(o.boundary_text);
+        boundary = peridem::parsePolygon(boundary_text, o.boundary);
         boundary.scale(scale).translate(c * -1.0);
       }
       const peridem::Grain2D grain =
@@ -550,7 +565,8 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
     // polygon: built-in shapes are centred by construction, files by centroid
     peridem::Polygon shape;
     if (o.shape == "file") {
-      shape = peridem::readPolygonFile(o.file);
+      std::istringstream shape_text(o.file_text);
+      shape = peridem::parsePolygon(shape_text, o.file);
       shape.translate(shape.centroid() * -1.0);
     } else {
       shape = peridem::makeShape(o.shape, o.params);
@@ -672,7 +688,7 @@ void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain 
     Rotation R = o.axis_given ? Rotation::about_axis(angle, o.axis) : Rotation::about_z(angle);
     if (o.rotate_seed > 0) {
       const double u1 = uniform(gen), u2 = uniform(gen), u3 = uniform(gen);
-      R = domain->dimension == 2 ? Rotation::about_z(2 * M_PI * u1)
+      R = domain->dimension == 2 ? Rotation::about_z(2 * MY_PI * u1)
                                  : Rotation::random3d(u1, u2, u3);
     }
     const auto &c = o.at[ig];
@@ -784,8 +800,7 @@ void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain 
 
 void CreatePeridemGrains::read_positions(const char *file, Options &o)
 {
-  std::ifstream in(file);
-  if (!in) error->all(FLERR, "{}: cannot open positions file {}", CMD, file);
+  std::istringstream in(PERIDEM::read_text_file(lmp, CMD, "positions", file, false));
   std::string line;
   int columns = 0;
   for (int lineno = 1; std::getline(in, line); lineno++) {
@@ -822,13 +837,13 @@ void CreatePeridemGrains::read_positions(const char *file, Options &o)
                    words[3]);
       o.at_radius.push_back(v[3]);
     }
-    if (n >= 5) o.at_angle.push_back(v[4] * M_PI / 180.0);
+    if (n >= 5) o.at_angle.push_back(v[4] * MY_PI / 180.0);
     if (n == 6) o.labels_of_lines.push_back(words[5]);
   }
 }
 
 /* ----------------------------------------------------------------------
-   grains of a bed file: their volume against the bed's (grain-shape seed §7.3
+   grains of a bed file: their volume against the bed's (Bhattacharya & Lipton 2023, §7.3
    volume fraction), and that of all atoms so far (several labels, one bed)
 ------------------------------------------------------------------------- */
 

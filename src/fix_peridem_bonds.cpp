@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_peridem_bonds.h"
+#include "lmp_peridem_compat.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -96,7 +97,7 @@ void FixPeridemBonds::init()
 /* ----------------------------------------------------------------------
    a node beyond a fixed ('f') box boundary is lost by LAMMPS at this
    reneighbouring and its partners' bonds then name a missing atom ("Bond
-   atoms missing", issue 9): stop with the node and its grain named, unless
+   atoms missing"): stop with the node and its grain named, unless
    a fix peridem/wall with 'lost delete' removes such nodes with their bonds
 ------------------------------------------------------------------------- */
 
@@ -141,7 +142,7 @@ void FixPeridemBonds::collect()
   broken_here = 0;
   if (all == 0) return; // nothing to send home: ghost entries are still zero
   comm_mode = COUNTS;
-  comm->reverse_comm_fix(this);
+  PERIDEM::reverse_comm(comm, this);
   clear_ghosts();
   // every broken bond was counted once (see bond_broken): keep the global
   // bond count of write_data and thermo right
@@ -151,7 +152,7 @@ void FixPeridemBonds::collect()
   // neighbour list holds the pair and contact acts between the pieces
   if (force->newton_bond) {
     comm_mode = PARTNERS;
-    comm->reverse_comm_fix_variable(this);
+    PERIDEM::reverse_comm_variable(comm, this);
   }
   const int nlocal = atom->nlocal;
   for (const auto &[i, partners] : lost_partners)
@@ -389,14 +390,14 @@ void FixPeridemBonds::reverse_sum(double *a)
 {
   comm_mode = SUM;
   comm_a = a;
-  comm->reverse_comm_fix(this, 1);
+  PERIDEM::reverse_comm(comm, this, 1);
 }
 
 void FixPeridemBonds::forward(double *a, double *b)
 {
   comm_a = a;
   comm_b = b;
-  comm->forward_comm_fix(this, 2);
+  PERIDEM::forward_comm(comm, this, 2);
 }
 
 int FixPeridemBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
@@ -419,7 +420,7 @@ void FixPeridemBonds::unpack_forward_comm(int n, int first, double *buf)
 }
 
 /* ----------------------------------------------------------------------
-   data files (issue 9): the broken bonds are gone from the Bonds section,
+   data files: the broken bonds are gone from the Bonds section,
    so write_data adds a section "PeridemDamage" with one line per node:
    ID, number of broken bonds, Z of the broken bonds. read_data reads it
    into a fix property/atom d_peridem_nbroken d_peridem_zbroken, which this

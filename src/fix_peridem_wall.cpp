@@ -8,13 +8,13 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_peridem_wall.h"
+#include "lmp_peridem_citations.h"
 #include "fix_peridem_bonds.h"
 #include "lmp_peridem_topology.h"
 
 #include "lmp_peridem_parse.h"
 #include "force.h"
 #include "lmp_peridem_startup.h"
-#include "pair_peridem_contact.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -22,6 +22,7 @@
 #include "error.h"
 #include "input.h"
 #include "modify.h"
+#include "pair.h"
 #include "respa.h"
 #include "update.h"
 #include "variable.h"
@@ -57,6 +58,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       deleted_total(0), servo_any(0), var_any(0), in_setup(0), reduced(0), dissipated_local(0.0),
       lost_local(0)
 {
+  PERIDEM::cite_grain_shape(lmp);
   scalar_flag = 1;
   vector_flag = 1;
   size_vector = PER_WALL * nwalls + 3;
@@ -231,14 +233,20 @@ int FixPeridemWall::parse_face(const char *word) const
 
 void FixPeridemWall::take_contact_from_pair()
 {
-  auto *pair = dynamic_cast<PairPeridemContact *>(force->pair_match("peridem/contact", 1));
+  // through Pair::extract, as LAMMPS styles share data: no dependence on the pair class
+  Pair *pair = force->pair_match("peridem/contact", 1);
   if (!pair) error->all(FLERR, "{}: contact pair needs pair_style peridem/contact", STYLE);
+  int dim = 0;
+  const auto *params =
+      static_cast<const peridem::ContactParams *>(pair->extract("peridem_contact_params", dim));
+  if (!params || dim != 1)
+    error->all(FLERR, "{}: pair_style peridem/contact gave no contact parameters", STYLE);
   type_params.assign(atom->ntypes + 1, peridem::ContactParams());
   for (int t = 1; t <= atom->ntypes; t++) {
-    if (!pair->type_set(t, t))
+    if (!(params[t].Kn > 0.0)) // Kn > 0 for every pair_coeff (check_contact_params)
       error->all(FLERR, "{}: contact pair needs pair_coeff {} {} of pair_style peridem/contact",
                  STYLE, t, t);
-    type_params[t] = pair->type_spec(t, t).params;
+    type_params[t] = params[t];
   }
 }
 
@@ -261,7 +269,7 @@ void FixPeridemWall::check_order(const char *when) const
 
 /* ----------------------------------------------------------------------
    a wall on a periodic dimension would push nodes near its periodic image
-   across the seam (issue 9); LAMMPS's fix wall refuses it the same way.
+   across the seam; LAMMPS's fix wall refuses it the same way.
    Checked when defined and at each run (change_box may change boundaries).
 ------------------------------------------------------------------------- */
 
@@ -571,7 +579,7 @@ void FixPeridemWall::servo_control()
 /* ---------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   'lost delete' (issue 9): fragments may leave a container through an open
+   'lost delete': fragments may leave a container through an open
    side in impacts. At each reneighbouring, before LAMMPS would lose them,
    nodes whose whole contact disk lies beyond a wall (d <= -Rc) or that lie
    beyond a fixed box boundary are deleted together with their bonds; the

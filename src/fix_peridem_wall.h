@@ -2,7 +2,7 @@
    PERIDEM: fix peridem/wall, rigid analytic container walls.
 
    An axis-aligned rectangle (2D) or box (3D) of flat walls that push the
-   peridynamic nodes of the group through the grain-shape seed's wall
+   peridynamic nodes of the group through Bhattacharya & Lipton's (2023) wall
    contact (§4.5, eq. 4.7-4.8; formulas in peridem_wall_geometry.h, which
    this fix calls). Walls may be fixed, move at a constant velocity, follow
    an equal-style variable, or hold a pressure (servo); they may slide

@@ -4,8 +4,8 @@
    Choices (documented in doc/fix_peridem_wall.rst, "Contact keywords"):
    - bulk modulus k of a material: its K if the file gives it; a material
      given by E alone takes the bond-based Poisson ratio of the dimension
-     (1/4 in 3D, 1/3 in 2D, grain-shape seed Remark 1), k = E/(3(1-2 nu)).
-   - Rc larger than the horizon: a warning, not an error. The seeds keep
+     (1/4 in 3D, 1/3 in 2D, Bhattacharya & Lipton 2023, Remark 1), k = E/(3(1-2 nu)).
+   - Rc larger than the horizon: a warning, not an error. The papers keep
      R_c < eps (R_c = 0.95 h or eps/5), but nothing in the law breaks when
      R_c > eps: the contact zone is just thicker than the bond family (a
      calibrated Kn, or a thick wall layer, may want that). An error would

@@ -11,14 +11,14 @@
      horizon eps             horizon (overrides the material's; with Kn it
                              gives k = pi eps^p K_n/18 for restitution)
      Kn_form eps4 | eps5     p: default eps4 in 2D (force per unit thickness),
-                             eps5 in 3D; eps5 in 2D for the PeriDEM seed's
+                             eps5 in 3D; eps5 in 2D for Jha et al.'s (2021)
                              tests; eps4 in 3D is an error
      Rc value                contact radius R_c
      Rc_factor f             R_c = f h with the node spacing h of
-     spacing h               (the seeds use f = 0.95; R_c = eps/5 is Rc)
+     spacing h               (the papers use f = 0.95; R_c = eps/5 is Rc)
      damping none | nodal r_d | restitution eps_n C | centroid eps_n C
                              (centroid: dashpot between grain centres, PeriDEM
-                             seed eq. 26-30; pair_style peridem/contact only)
+                             Jha et al. 2021, eq. 26-30; pair_style peridem/contact only)
      centroid_range D        damping centroid acts while two nodes of the
                              grains are closer than D >= R_c (default R_c)
      friction none | regularized mu | coulomb mu
@@ -51,7 +51,7 @@ struct ContactSpec {
   peridem::KnForm kn_form = peridem::KnForm::Eps5;
   std::string origin; // for the log, e.g. "material M1 of file"
   // damping centroid eps_n C: a dashpot between the centres of two grains in
-  // contact (PeriDEM seed eq. 26-30), applied by pair_style peridem/contact.
+  // contact (Jha et al. 2021, eq. 26-30), applied by pair_style peridem/contact.
   // params.damping is then None (no nodal dashpot) and params.eps_n, C and
   // kappa_eff hold eps_bar, C_bar and kappa_eff of eq. 28.
   bool centroid = false;

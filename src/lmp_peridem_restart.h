@@ -6,6 +6,8 @@
 #ifndef LMP_PERIDEM_RESTART_H
 #define LMP_PERIDEM_RESTART_H
 
+#include "peridem_contact_law.h"
+
 #include <cstdio>
 
 namespace LAMMPS_NS {
@@ -21,14 +23,34 @@ namespace PERIDEM {
 enum RestartTag : int {
   RESTART_BOND_PERIDEM = 0x50444201,     // bond_style peridem: format 1
   RESTART_BOND_PERIDEM_LPS = 0x50444c01, // bond_style peridem/lps: format 1
-  RESTART_PAIR_CONTACT = 0x50445001,     // pair_style peridem/contact: format 1
+  RESTART_PAIR_CONTACT = 0x50445002,     // pair_style peridem/contact: format 2
 };
+
+// The format version of a tag (its low byte).
+inline int restart_format_version(int tag)
+{
+  return tag & 0xff;
+}
 
 void write_restart_tag(FILE *fp, RestartTag tag);
 
 // reads the tag on rank 0, broadcasts it, and ends the run with an error
 // naming the style when it is not `tag`
 void check_restart_tag(LAMMPS_NS::LAMMPS *lmp, FILE *fp, RestartTag tag, const char *style);
+
+// As check_restart_tag, but also accepts the older formats of the same style from
+// version `oldest` on; returns the version read (the same on every rank).
+int read_restart_version(LAMMPS_NS::LAMMPS *lmp, FILE *fp, RestartTag tag, int oldest,
+                         const char *style);
+
+// Contact parameters in a restart file, field by field (format 2 of pair_style
+// peridem/contact): a field count, then each field as a double, so that a field added to
+// peridem::ContactParams changes the count and the old files are refused by name instead of
+// being misread. Format 1 wrote the struct as raw bytes; read_contact_params_v1 reads
+// that layout (x86-64 and other LP64 ABIs), which was frozen when format 2 came.
+void write_contact_params(FILE *fp, const peridem::ContactParams &p);
+peridem::ContactParams read_contact_params(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
+peridem::ContactParams read_contact_params_v1(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 
 } // namespace PERIDEM
 

@@ -9,6 +9,7 @@
 #include "domain.h"
 #include "error.h"
 #include "lammps.h"
+#include "math_const.h"
 #include "neighbor.h"
 #include "utils.h"
 
@@ -17,6 +18,7 @@
 #include <limits>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 
 namespace PERIDEM {
 
@@ -57,8 +59,8 @@ bigint OverlapReport::report(LAMMPS *lmp, const std::string &style, const std::s
 
 double half_list_partners(int dimension, double reach, double volume)
 {
-  const double pi = 3.14159265358979323846;
-  const double ball = dimension == 2 ? pi * reach * reach : 4.0 / 3.0 * pi * reach * reach * reach;
+  const double ball =
+      dimension == 2 ? MY_PI * reach * reach : 4.0 / 3.0 * MY_PI * reach * reach * reach;
   return 0.5 * ball / volume;
 }
 
@@ -76,10 +78,9 @@ void check_neighbor_skin(LAMMPS *lmp, const std::string &style, double cutoff)
   const int one = lmp->neighbor->oneatom;
   if (partners <= one) return;
   // the skin for which a node inside a grain has one/2 partners
-  const double pi = 3.14159265358979323846;
   const double target = 0.5 * one;
-  const double reach = dim == 2 ? std::sqrt(2.0 * target * all / pi)
-                                : std::cbrt(2.0 * target * all * 3.0 / (4.0 * pi));
+  const double reach = dim == 2 ? std::sqrt(2.0 * target * all / MY_PI)
+                                : std::cbrt(2.0 * target * all * 3.0 / (4.0 * MY_PI));
   const double spacing = dim == 2 ? std::sqrt(all) : std::cbrt(all);
   lmp->error->warning(FLERR,
                       "{}: the neighbour list reaches {} (cutoff {} + neighbor skin {}), where a "

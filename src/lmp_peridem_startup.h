@@ -1,6 +1,6 @@
 /* -*- c++ -*- ----------------------------------------------------------
    PERIDEM: start-up checks shared by pair_style peridem/contact and
-   fix peridem/wall (issue 10).
+   fix peridem/wall.
 
    - overlaps at the first step: nodes of different grains, or nodes and a
      wall, already closer than the contact radius R_c feel a contact force

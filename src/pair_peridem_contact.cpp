@@ -2,16 +2,17 @@
    PERIDEM: pair_style peridem/contact.
 
    The contact law (repulsion, damping, friction, self-contact) lives in
-   peridem_contact_law.h (grain-shape seed §4.1-4.4, PeriDEM seed §2.2-2.3);
+   peridem_contact_law.h (Bhattacharya & Lipton 2023, §4.1-4.4, Jha et al. 2021, §2.2-2.3);
    this file applies it to LAMMPS's neighbour list. Nodes joined by an
    intact bond are excluded through the special list (special_bonds lj 0.0
    for 1-2 pairs); fix peridem/bonds removes a broken bond's nodes from each
    other's special lists, so the pieces of a broken grain touch again.
-   damping centroid (PeriDEM seed §2.3.2) acts between grain centres:
+   damping centroid (Jha et al. 2021, §2.3.2) acts between grain centres:
    compute_centroid_damping below.
 ------------------------------------------------------------------------- */
 
 #include "pair_peridem_contact.h"
+#include "lmp_peridem_citations.h"
 
 #include "atom.h"
 #include "bond.h"
@@ -47,6 +48,8 @@ const char *const STYLE = "pair_style peridem/contact";
 PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
     : Pair(lmp), cut(nullptr), self_contact(1), dissipated(0.0), centroid_on(0), grains_stale(true)
 {
+  PERIDEM::cite_grain_shape(lmp);
+  PERIDEM::cite_peridem(lmp);
   restartinfo = 1;
   single_enable = 1;
   writedata = 0;
@@ -72,7 +75,7 @@ PairPeridemContact::~PairPeridemContact()
    cutoff); false for nodes of one grain without self-contact. Nodes of one
    grain are never joined by an intact bond here (bonded pairs are not in
    the neighbour list): they touch with the self-contact law, whose radius
-   depends on the reference distance (grain-shape seed §4.4).
+   depends on the reference distance (Bhattacharya & Lipton 2023, §4.4).
 ------------------------------------------------------------------------- */
 
 bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) const
@@ -158,7 +161,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
       const PERIDEM::ContactSpec &sp = spec[itype][jtype];
 
       // two grains touch (closer than R_c, or centroid_range): damping
-      // centroid of this grain pair (seed eq. 27)
+      // centroid of this grain pair (Jha et al. 2021, eq. 27)
       if (sp.centroid && molecule[i] != molecule[j] && rsq < touchsq[itype][jtype]) {
         if (molecule[i] < molecule[j])
           touch_local.push_back({molecule[i], molecule[j], itype, jtype});
@@ -200,7 +203,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   damping centroid, PeriDEM seed §2.3.2: for every pair of grains p, p'
+   damping centroid, Jha et al. 2021, §2.3.2: for every pair of grains p, p'
    with two nodes closer than R_c (eq. 27: dist(p, p') < R_c)
      F = -beta_bar max(0, (v_c - v_c') . e_c) e_c   on p,  -F on p'
    (centroid_damping_force, eq. 26-27), beta_bar from eq. 28 with
@@ -450,7 +453,7 @@ void PairPeridemContact::coeff(int narg, char **arg)
 
 /* ----------------------------------------------------------------------
    unlike types without their own pair_coeff: the harmonic mean of the two
-   bulk moduli gives K_n (both seeds), the mean of the contact radii, and
+   bulk moduli gives K_n (both papers), the mean of the contact radii, and
    the damping and friction of the two types, which must agree
 ------------------------------------------------------------------------- */
 
@@ -530,7 +533,7 @@ void PairPeridemContact::init_style()
                STYLE);
   // 'special_bonds lj 0.0 1.0 1.0' leaves the coul weights at 0, and LAMMPS
   // then builds 1-3 and 1-4 lists of every node's horizon neighbours' partners
-  // (46 s for 2197 nodes, developer notes): refuse it (issue 9)
+  // (46 s for 2197 nodes, developer notes): refuse it
   if (atom->nbonds > 0 && (force->special_coul[2] != 1.0 || force->special_coul[3] != 1.0))
     error->all(FLERR,
                "{} requires special_bonds coul weights 1.0 for 1-3 and 1-4 pairs too (now {} "
@@ -639,7 +642,7 @@ void PairPeridemContact::report_time_step()
       in.node_volume = std::max(-a[1], -b[1]);
       in.rho = std::min(a[2], b[2]);
       in.bond_omega2 = std::max(bond_omega2[i], bond_omega2[j]);
-      in.walls = modify->find_fix_by_style("^peridem/wall") >= 0;
+      in.walls = PERIDEM::has_fix_style(modify, "^peridem/wall");
       in.Kn = p.Kn;
       in.Rc = p.Rc;
       in.damping_ratio = p.damping == peridem::ContactDamping::Nodal
@@ -741,7 +744,7 @@ void PairPeridemContact::write_restart(FILE *fp)
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (!setflag[i][j]) continue;
       const PERIDEM::ContactSpec &s = spec[i][j];
-      fwrite(&s.params, sizeof(peridem::ContactParams), 1, fp);
+      PERIDEM::write_contact_params(fp, s.params);
       const double extra[6] = {s.bulk_modulus,   s.horizon,
                                s.density,        s.centroid ? 1.0 : 0.0,
                                s.centroid_range, (double)peridem::kn_exponent(s.kn_form)};
@@ -751,7 +754,9 @@ void PairPeridemContact::write_restart(FILE *fp)
 
 void PairPeridemContact::read_restart(FILE *fp)
 {
-  PERIDEM::check_restart_tag(lmp, fp, PERIDEM::RESTART_PAIR_CONTACT, "pair_style peridem/contact");
+  // format 1 (raw struct) is still read; format 2 writes field by field
+  const int format =
+      PERIDEM::read_restart_version(lmp, fp, PERIDEM::RESTART_PAIR_CONTACT, 1, STYLE);
   read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++)
@@ -760,12 +765,10 @@ void PairPeridemContact::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
       PERIDEM::ContactSpec &s = spec[i][j];
+      s.params = format == 1 ? PERIDEM::read_contact_params_v1(lmp, fp, STYLE)
+                             : PERIDEM::read_contact_params(lmp, fp, STYLE);
       double extra[6];
-      if (comm->me == 0) {
-        utils::sfread(FLERR, &s.params, sizeof(peridem::ContactParams), 1, fp, nullptr, error);
-        utils::sfread(FLERR, extra, sizeof(double), 6, fp, nullptr, error);
-      }
-      MPI_Bcast(&s.params, sizeof(peridem::ContactParams), MPI_BYTE, 0, world);
+      if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), 6, fp, nullptr, error);
       MPI_Bcast(extra, 6, MPI_DOUBLE, 0, world);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
@@ -805,6 +808,15 @@ void *PairPeridemContact::extract(const char *str, int &dim)
 {
   dim = 0;
   if (strcmp(str, "dissipated") == 0) return (void *)&dissipated;
+  // per type t: the law of pair_coeff t t (Kn = 0 where it is not set), for fix peridem/wall
+  // 'contact pair'
+  if (strcmp(str, "peridem_contact_params") == 0) {
+    dim = 1;
+    diag_params.assign(atom->ntypes + 1, peridem::ContactParams());
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (type_set(t, t)) diag_params[t] = spec[t][t].params;
+    return (void *)diag_params.data();
+  }
   return nullptr;
 }
 

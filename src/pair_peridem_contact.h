@@ -54,6 +54,7 @@ class PairPeridemContact : public Pair {
   double **touchsq;  // squared distance below which grains touch (damping centroid)
   int self_contact;  // 1: nodes of one grain without an intact bond touch too
   double dissipated; // energy dissipated by damping and friction on this rank
+  std::vector<peridem::ContactParams> diag_params; // extract("peridem_contact_params")
 
   void allocate();
   void mix(int i, int j);
@@ -64,7 +65,7 @@ class PairPeridemContact : public Pair {
   bool start_checked = false;        // overlaps at the first step reported (setup())
   void report_start_overlaps();
 
-  // ---- damping centroid (PeriDEM seed §2.3.2, eq. 26-30) ----
+  // ---- damping centroid (Jha et al. 2021, §2.3.2, eq. 26-30) ----
   // Grains are molecule IDs. The pair loop records the grain pairs with a
   // node pair closer than R_c; they are gathered from all ranks (one
   // MPI_Allgather of a count per step, MPI_Allgatherv when there are any).

@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "peridem_bed.h"
+#include "peridem_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,7 +64,7 @@ double hole_area_2d(const std::vector<double> &xy, double h)
   // every other empty region is enclosed; pockets smaller than a disk of
   // radius 2h are gaps of the dilation along the stepped boundary of a
   // turned lattice, not holes
-  const double min_hole = M_PI * 4.0 * h * h;
+  const double min_hole = kPi * 4.0 * h * h;
   double area = 0.0;
   for (size_t c = 0; c < state.size(); c++) {
     if (state[c] != 0) continue;

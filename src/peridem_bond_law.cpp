@@ -7,7 +7,8 @@
 //   conic    W = 1 - t: m_k = 1/(k+1) - 1/(k+2) = 1/((k+1)(k+2))
 //
 // (i) Elastic constant: uniform isotropic stretch y = (1+s) x gives every bond stretch s.
-// The strain energy density at a point is half the energy of its bonds ([BL] eq. 3.1):
+// The strain energy density at a point is half the energy of its bonds (Bhattacharya & Lipton 2023,
+// eq. 3.1):
 //   W_pd = 1/2 int_{H_eps} e(r) dV.
 //   2D: W_pd = 1/2 int_0^eps 1/2 c w s^2 r 2 pi r dr   = pi/2 c s^2 m_2 eps^3
 //   3D: W_pd = 1/2 int_0^eps 1/2 c w s^2 r 4 pi r^2 dr = pi   c s^2 m_3 eps^4
@@ -17,7 +18,7 @@
 // Equating:
 //   2D: c = 2E/(pi eps^3 (1-nu) m_2): constant (m_2 = 1/3)  c = 6E/(pi eps^3 (1-nu)),
 //                                     conic    (m_2 = 1/12) c = 24E/(pi eps^3 (1-nu)),
-//       i.e. [BL] Table 1; with nu = 1/3: 9E/(pi eps^3) and 36E/(pi eps^3).
+//       i.e. Bhattacharya & Lipton 2023, Table 1; with nu = 1/3: 9E/(pi eps^3) and 36E/(pi eps^3).
 //   3D: c = 9K/(2 pi eps^4 m_3):      constant (m_3 = 1/4)  c = 18K/(pi eps^4)  [SA05],
 //                                     conic    (m_3 = 1/20) c = 90K/(pi eps^4).
 //
@@ -41,6 +42,7 @@
 // Note that the Table 1 s0 values hold only for nu = 1/3; in general s0 = sqrt(G_c/(c m_3
 // eps^4)) in 2D and sqrt(2 G_c/(pi c m_4 eps^5)) in 3D, which is what is computed below.
 #include "peridem_bond_law.h"
+#include "peridem_math.h"
 
 #include <cmath>
 #include <sstream>
@@ -48,8 +50,6 @@
 namespace peridem {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // m_k = int_0^1 W(t) t^k dt for the micromodulus shape W.
 double moment(Micromodulus m, int k)
@@ -143,7 +143,7 @@ double lps_critical_stretch(double K, double G, double G_c, double horizon)
   require_positive("shear modulus G", G);
   require_positive("fracture energy G_c", G_c);
   require_positive("horizon", horizon);
-  // [JDBL] eq. (10)
+  // Jha et al. 2021, eq. (10)
   const double denom = 3.0 * G + std::pow(0.75, 4) * (K - 5.0 * G / 3.0);
   if (!(denom > 0.0))
     throw ParameterError("LPS critical stretch undefined: 3G + (3/4)^4 (K - 5G/3) <= 0");

@@ -1,10 +1,12 @@
 // PERIDEM: pure bond-based peridynamic bond law (no LAMMPS dependency).
 //
-// References (see shared/seeds/):
-//  [BL] Bhattacharya & Lipton, "PeriDEM grain shape": eq. (3.1)-(3.2) force density,
+// References:
+//  Bhattacharya & Lipton 2023, "Simulating grain shape effects and damage in granular media
+//       using PeriDEM", SIAM J. Sci. Comput.: eq. (3.1)-(3.2) force density,
 //       Table 1 (spring constant c_w and critical stretch s_0 in 2D), Remark 1 (bond-based
 //       Poisson ratio 1/3 in 2D, 1/4 in 3D), Sec. 3.1 (breakage, bond-fraction damage).
-//  [JDBL] Jha, Desai, Bhattacharya & Lipton, "PeriDEM": eq. (7)-(10) state-based model,
+//  Jha, Desai, Bhattacharya & Lipton 2021 (Jha et al. 2021), "PeriDEM", J. Mech. Phys. Solids 151:
+//  eq. (7)-(10) state-based model,
 //       eq. (14)-(15) damage Z and fracture zone, eq. (31)-(33) nodal volumes and discrete force.
 //  [SA05] Silling & Askari, Comput. Struct. 83 (2005) 1526: PMB constants in 3D.
 //
@@ -31,19 +33,19 @@ class ParameterError : public std::runtime_error {
   explicit ParameterError(const std::string &msg) : std::runtime_error(msg) {}
 };
 
-// Micromodulus (bond-based, [BL] Table 1) and, for the state-based model, the influence
-// function J(r/eps) of [JDBL] eq. (7); "Conic" is 1 - r/eps in both cases.
+// Micromodulus (bond-based, Bhattacharya & Lipton 2023, Table 1) and, for the state-based model,
+// the influence function J(r/eps) of Jha et al. 2021, eq. (7); "Conic" is 1 - r/eps in both cases.
 enum class Micromodulus { Constant, Conic };
 
 // Which elastic constant is handed to derive_bond_constants().
 //  YoungsModulus: E.  BulkModulus: the 3D (material) bulk modulus K = E/(3(1-2nu)).
-// Bond-based peridynamics fixes the Poisson ratio ([BL] Remark 1): nu = 1/3 in 2D
-// (plane stress, thin sheet), nu = 1/4 in 3D, so either constant determines the other:
+// Bond-based peridynamics fixes the Poisson ratio (Bhattacharya & Lipton 2023, Remark 1): nu = 1/3
+// in 2D (plane stress, thin sheet), nu = 1/4 in 3D, so either constant determines the other:
 //   3D: K = E/(3(1-2*1/4)) = 2E/3.   2D: K = E/(3(1-2*1/3)) = E.
 enum class ElasticInput { YoungsModulus, BulkModulus };
 
-// When a bond breaks ([BL] Sec. 3.1 breaks on |s| > s0; LAMMPS peri/pmb and Silling-Askari
-// break in tension only, s > s0).
+// When a bond breaks (Bhattacharya & Lipton 2023, Sec. 3.1 breaks on |s| > s0; LAMMPS peri/pmb and
+// Silling-Askari break in tension only, s > s0).
 enum class BreakageMode { Tension, Absolute };
 
 // Partial-volume ("volume correction") of the neighbour volume V_j near the horizon edge.
@@ -60,20 +62,21 @@ enum class BreakageMode { Tension, Absolute };
 // function of r only, is symmetric in i,j).
 enum class VolumeCorrection { None, LammpsPeri, PeriDEM };
 
-// Constants of the bond law: spring constant c (the c_w of [BL] eq. 3.2; units
-// [modulus]/[length]^(d+1), so that c w s is a force per volume^2) and critical stretch s0.
+// Constants of the bond law: spring constant c (the c_w of Bhattacharya & Lipton 2023, eq. 3.2;
+// units [modulus]/[length]^(d+1), so that c w s is a force per volume^2) and critical stretch s0.
 struct BondConstants {
   double c = 0.0;
   double s0 = 0.0;
 };
 
-// Bond-based Poisson ratio ([BL] Remark 1): 1/3 in 2D (plane stress), 1/4 in 3D.
+// Bond-based Poisson ratio (Bhattacharya & Lipton 2023, Remark 1): 1/3 in 2D (plane stress), 1/4 in
+// 3D.
 double bond_based_poisson_ratio(int dimension);
 
 // Derive c and s0 from physical constants by matching (i) the strain energy density of a
 // uniform isotropic stretch to linear elasticity and (ii) the energy of all bonds crossing a
 // unit crack surface to G_c (derivations in peridem_bond_law.cpp).  Results:
-//   2D (plane stress, nu = 1/3, [BL] Table 1):
+//   2D (plane stress, nu = 1/3, Bhattacharya & Lipton 2023, Table 1):
 //     constant: c = 6E/(pi eps^3 (1-nu)) = 9E/(pi eps^3),   s0 = sqrt(4 pi G_c/(9 E eps))
 //     conic:    c = 24E/(pi eps^3 (1-nu)) = 36E/(pi eps^3), s0 = sqrt(5 pi G_c/(9 E eps))
 //   3D (nu = 1/4):
@@ -92,21 +95,22 @@ double implied_youngs_modulus(int dimension, Micromodulus micromodulus, double c
 double implied_fracture_energy(int dimension, Micromodulus micromodulus, double c, double s0,
                                double horizon);
 
-// Critical stretch of the linear peridynamic solid (state-based, 3D) used by [JDBL] eq. (10)
-// (from Zhu & Zhao): s0 = sqrt(G_c / ((3 G + (3/4)^4 (K - 5G/3)) eps)).
+// Critical stretch of the linear peridynamic solid (state-based, 3D) used by Jha et al. 2021, eq.
+// (10) (from Zhu & Zhao): s0 = sqrt(G_c / ((3 G + (3/4)^4 (K - 5G/3)) eps)).
 double lps_critical_stretch(double K, double G, double G_c, double horizon);
 
 // ---------------------------------------------------------------------------------------
 // Per-bond pure functions (inline; called once per bond per step).
 // ---------------------------------------------------------------------------------------
 
-// Stretch s = (|y| - |xi|)/|xi|  ([BL] Sec. 3, below eq. 3.1).
+// Stretch s = (|y| - |xi|)/|xi|  (Bhattacharya & Lipton 2023, Sec. 3, below eq. 3.1).
 inline double stretch(double current_length, double reference_length)
 {
   return (current_length - reference_length) / reference_length;
 }
 
-// Micromodulus value w(r) of [BL] Table 1: 1 (constant) or 1 - r/eps (conic), 0 beyond eps.
+// Micromodulus value w(r) of Bhattacharya & Lipton 2023, Table 1: 1 (constant) or 1 - r/eps
+// (conic), 0 beyond eps.
 inline double micromodulus_value(Micromodulus m, double r, double horizon)
 {
   if (m == Micromodulus::Constant) return 1.0;
@@ -114,7 +118,8 @@ inline double micromodulus_value(Micromodulus m, double r, double horizon)
 }
 
 // Pair force magnitude on node i along e = y/|y| (positive = toward j):
-// F = c w s V_i V_j  ([BL] eq. 3.2 times the two nodal volumes, [JDBL] eq. 33).
+// F = c w s V_i V_j  (Bhattacharya & Lipton 2023, eq. 3.2 times the two nodal volumes, Jha et al.
+// 2021, eq. 33).
 inline double bond_force(double c, double w, double s, double vol_i, double vol_j)
 {
   return c * w * s * vol_i * vol_j;
@@ -140,7 +145,7 @@ inline double bond_force_per_length(double k, double inv_reference_length,
   return k * (inv_reference_length - inv_current_length);
 }
 
-// Breakage test ([BL] Sec. 3.1): Tension: s > s0; Absolute: |s| > s0.
+// Breakage test (Bhattacharya & Lipton 2023, Sec. 3.1): Tension: s > s0; Absolute: |s| > s0.
 inline bool bond_breaks(double s, double s0, BreakageMode mode = BreakageMode::Tension)
 {
   return (mode == BreakageMode::Tension ? s : std::fabs(s)) > s0;
@@ -164,13 +169,14 @@ inline double volume_factor(VolumeCorrection vc, double r, double horizon, doubl
   }
 }
 
-// Bond-fraction damage of a node ([BL] Sec. 3.1): broken / reference bonds (0 if no bonds).
+// Bond-fraction damage of a node (Bhattacharya & Lipton 2023, Sec. 3.1): broken / reference bonds
+// (0 if no bonds).
 inline double bond_fraction_damage(long broken, long reference)
 {
   return reference > 0 ? static_cast<double>(broken) / static_cast<double>(reference) : 0.0;
 }
 
-// One bond's term of the damage Z of [JDBL] eq. (14):
+// One bond's term of the damage Z of Jha et al. 2021, eq. (14):
 //   Z(x) = sup_{y in B_eps(x)} |u(y) - u(x)| / |y - x| / s0,
 // i.e. |u_j - u_i| / |xi| / s0 (the displacement-difference magnitude, not the stretch;
 // |s| <= |u_j - u_i|/|xi| by the triangle inequality).  Z(x) is the max of this over the

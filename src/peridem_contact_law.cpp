@@ -43,8 +43,8 @@ void check_contact_params(const ContactParams &p)
 }
 
 /* ---------------------------------------------------------------------------------------
-   repulsion [BL] eq. (4.1) / Sec. 4.4, damping eq. (4.5) or [JDBL] eq. (22)-(25),
-   friction [BL] eq. (4.3) or [JDBL] eq. (19)-(20)
+   repulsion Bhattacharya & Lipton 2023, eq. (4.1) / Sec. 4.4, damping eq. (4.5) or Jha et al. 2021,
+eq. (22)-(25), friction Bhattacharya & Lipton 2023, eq. (4.3) or Jha et al. 2021, eq. (19)-(20)
 ------------------------------------------------------------------------------------------ */
 
 ContactResult contact_force(const ContactInput &in, const ContactParams &p)
@@ -69,11 +69,12 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p)
   // Normal damping: F_d = -c vn e.
   double c = 0.0;
   if (p.damping == ContactDamping::Nodal) {
-    // [BL] eq. (4.5) derivation: c = 2 r_d sqrt(k m), k = K V_i V_j, m = m_red (= rho V_x for
-    // a rigid partner, which is the seed's beta_d V_x V_y with beta_d = 2 r_d sqrt(K rho/V_y)).
+    // Bhattacharya & Lipton 2023, eq. (4.5) derivation: c = 2 r_d sqrt(k m), k = K V_i V_j, m =
+    // m_red (= rho V_x for a rigid partner, which is Bhattacharya & Lipton's (2023) beta_d V_x V_y
+    // with beta_d = 2 r_d sqrt(K rho/V_y)).
     c = 2.0 * p.r_d * std::sqrt(K * in.vol_i * in.vol_j * m_red);
   } else if (p.damping == ContactDamping::Restitution) {
-    // [JDBL] eq. (23) with m_eq of eq. (24) (harmonic mean; 2 m_i for a rigid partner).
+    // Jha et al. 2021, eq. (23) with m_eq of eq. (24) (harmonic mean; 2 m_i for a rigid partner).
     c = restitution_damping_coefficient(p.eps_n, p.C, p.kappa_eff, p.Rc,
                                         harmonic_mean(in.mass_i, in.mass_j));
   }
@@ -95,8 +96,9 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p)
     if (vt_norm > 0.0 && slip > 0.0) {
       double scale = slip / vt_norm; // slip: -mu|F_r| vt/|vt|
       if (p.friction == ContactFriction::Regularized && in.dt > 0.0) {
-        // [BL] eq. (4.3): stick when |vt| <= v_thr = mu|F_r| dt/m; then F = -(1/eps_f) vt with
-        // eps_f = dt/m, which stops the relative tangential motion of the pair in one step.
+        // Bhattacharya & Lipton 2023, eq. (4.3): stick when |vt| <= v_thr = mu|F_r| dt/m; then F =
+        // -(1/eps_f) vt with eps_f = dt/m, which stops the relative tangential motion of the pair
+        // in one step.
         const double v_thr = slip * in.dt / m_red;
         if (vt_norm <= v_thr) {
           scale = m_red / in.dt;
@@ -113,7 +115,7 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p)
 }
 
 /* ---------------------------------------------------------------------------------------
-   centroid damping [JDBL] eq. (26)-(27)
+   centroid damping Jha et al. 2021, eq. (26)-(27)
 ------------------------------------------------------------------------------------------ */
 
 double centroid_damping_force(const double sep_c[3], const double vrel_c[3], double beta_bar,
@@ -167,9 +169,9 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
     const bool conic = in.micromodulus == Micromodulus::Conic;
     double integral; // integral over the horizon of w(r)/r dV
     if (two_d)
-      integral = conic ? kContactPi * eps : 2.0 * kContactPi * eps;
+      integral = conic ? kPi * eps : 2.0 * kPi * eps;
     else
-      integral = conic ? 2.0 / 3.0 * kContactPi * eps * eps : 2.0 * kContactPi * eps * eps;
+      integral = conic ? 2.0 / 3.0 * kPi * eps * eps : 2.0 * kPi * eps * eps;
     // isotropic family: lambda_max(A) = (1/d) of the row sum
     out.dt_bond = bond_critical_time_step(in.rho, in.c * integral / in.dimension);
   }
@@ -181,8 +183,8 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
       throw ParameterError("stable_time_step: node volume, node mass and Rc must be > 0");
     double n = in.n_contacts;
     if (n <= 0.0) {
-      const double ball = two_d ? kContactPi * R * R : 4.0 / 3.0 * kContactPi * R * R * R;
-      const double wall = two_d ? 2.0 * R * R : kContactPi * R * R * R; // k_wall/(K_n V)
+      const double ball = two_d ? kPi * R * R : 4.0 / 3.0 * kPi * R * R * R;
+      const double wall = two_d ? 2.0 * R * R : kPi * R * R * R; // k_wall/(K_n V)
       n = std::ceil(ball / V) / in.dimension + (in.walls ? std::ceil(wall / V) : 0.0);
     }
     out.n_contacts = n;

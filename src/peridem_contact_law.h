@@ -1,65 +1,72 @@
 // PERIDEM: pure node-to-node contact law (repulsion, damping, friction) shared by
 // `pair_style peridem/contact` and `fix peridem/wall` (no LAMMPS dependency).
 //
-// References (see shared/seeds/):
-//  [BL]   Bhattacharya & Lipton, "PeriDEM grain shape": eq. (4.1) repulsion and K_n,
+// References:
+//  Bhattacharya & Lipton 2023, "Simulating grain shape effects ... using PeriDEM", SIAM J. Sci.
+//  Comput.: eq. (4.1) repulsion and K_n,
 //         eq. (4.3) regularized nonlocal friction, eq. (4.5) nodal damping, Sec. 4.4 self
 //         contact, Sec. 4.5 walls (the wall fills in the partner, see peridem_wall_geometry.h).
-//  [JDBL] Jha, Desai, Bhattacharya & Lipton, "PeriDEM": eq. (16)-(18) normal force, eq. (19)-(20)
+//  Jha, Desai, Bhattacharya & Lipton 2021 (Jha et al. 2021), "PeriDEM", J. Mech. Phys. Solids 151:
+//  eq. (16)-(18) normal force, eq. (19)-(20)
 //         Coulomb friction, eq. (21)-(25) restitution damping, eq. (26)-(30) centroid damping,
 //         eq. (36) K_n.
 //
 // Conventions (the same for every function here):
 //   sep  = x_j - x_i      current vector from node i to its partner j; r = |sep|; e = sep/r
-//   vrel = v_i - v_j      velocity of i relative to j ([BL] v(x,y), [JDBL] -(v'-v))
-//   vn   = vrel . e       > 0 while the nodes approach (= -delta_dot of [JDBL] eq. 21)
-//   Forces are the force ON i; the partner receives the opposite force (Newton's third law).
-//   The force is a force (not a density): [BL] eq. (4.1) F_r already carries V_i V_j and the
-//   [JDBL] densities are multiplied by V (their eq. 17, 22 are per volume of x).
-//   A rigid partner (wall) has mass_j = +infinity.
+//   vrel = v_i - v_j      velocity of i relative to j (Bhattacharya & Lipton 2023 v(x,y), Jha et
+//   al. 2021 -(v'-v)) vn   = vrel . e       > 0 while the nodes approach (= -delta_dot of Jha et
+//   al. 2021, eq. 21) Forces are the force ON i; the partner receives the opposite force (Newton's
+//   third law). The force is a force (not a density): Bhattacharya & Lipton 2023, eq. (4.1) F_r
+//   already carries V_i V_j and the Jha et al. 2021 densities are multiplied by V (their eq. 17, 22
+//   are per volume of x). A rigid partner (wall) has mass_j = +infinity.
 //
-// Choices where the seeds are ambiguous (each is noted again where it is used):
-//  * K_n for unlike materials: both seeds take the harmonic mean of the BULK MODULI
-//    ([BL] below eq. 4.1, [JDBL] eq. 25 and Sec. 3.2) and then K_n = 18 k_eff/(pi eps^p).  For
-//    equal horizons that equals the harmonic mean of the two K_n; with unlike horizons (not
-//    covered by the seeds) contact_stiffness_mixed() takes the harmonic mean of the two K_n.
-//  * Sign of friction and damping: [BL] eq. (4.3) writes -mu|F_r| e_perp(y,x) and [JDBL]
+// Choices where the papers are ambiguous (each is noted again where it is used):
+//  * K_n for unlike materials: both papers take the harmonic mean of the BULK MODULI
+//    (Bhattacharya & Lipton 2023, below eq. 4.1, Jha et al. 2021, eq. 25 and Sec. 3.2) and then K_n
+//    = 18 k_eff/(pi eps^p).  For equal horizons that equals the harmonic mean of the two K_n; with
+//    unlike horizons (not covered by the papers) contact_stiffness_mixed() takes the harmonic mean
+//    of the two K_n.
+//  * Sign of friction and damping: Bhattacharya & Lipton 2023, eq. (4.3) writes -mu|F_r|
+//  e_perp(y,x) and Jha et al. 2021
 //    eq. (19)-(20) -mu|F_n| (I - e e)(v' - v)/|v' - v|; read literally the latter pushes i
 //    ALONG its tangential velocity relative to j (the sign error of one public code).  Here
 //    friction always opposes the tangential part of vrel and damping opposes vn, so the power
 //    F . vrel of both is <= 0.
-//  * [BL] eq. (4.5) prints v/|v| (a unit vector) in the damping force, which contradicts its
+//  * Bhattacharya & Lipton 2023, eq. (4.5) prints v/|v| (a unit vector) in the damping force, which
+//  contradicts its
 //    own Kelvin-Voigt derivation (c = beta_d V_x V_y, dissipation -c |v_n|^2); we use the
 //    derivation: F_d = -c vn e.
-//  * Masses: [BL] uses the mass rho V_x of the receiving node alone (partner held fixed) in
+//  * Masses: Bhattacharya & Lipton 2023 uses the mass rho V_x of the receiving node alone (partner
+//  held fixed) in
 //    beta_d and in v_thr / eps_f of eq. (4.3).  That breaks Newton's third law when V_i != V_j
 //    and, for two equal free nodes, makes the "stick" force reverse the relative velocity.  We
-//    use the reduced mass m_red = m_i m_j/(m_i + m_j), which equals the seed's rho V_x for a
-//    rigid partner (walls) and is symmetric.  The restitution formula [JDBL] eq. (23) keeps its
-//    own m_eq = harmonic mean = 2 m_red (eq. 24).
+//    use the reduced mass m_red = m_i m_j/(m_i + m_j), which equals Bhattacharya & Lipton's (2023)
+//    rho V_x for a rigid partner (walls) and is symmetric.  The restitution formula Jha et al.
+//    2021, eq. (23) keeps its own m_eq = harmonic mean = 2 m_red (eq. 24).
 //  * The stick branch of eq. (4.3) cancels the tangential relative velocity of ONE pair in one
 //    step; a node sticking to several partners at once can still overshoot (inherent to a
 //    pairwise law; the wall applies one friction term per wall).
-//  * Damping acts only while the nodes approach (vn > 0) as [JDBL] eq. (22), (27) state;
-//    [BL] eq. (4.5) (Kelvin-Voigt) damps both ways: ContactParams::damp_approach_only.
+//  * Damping acts only while the nodes approach (vn > 0) as Jha et al. 2021, eq. (22), (27) state;
+//    Bhattacharya & Lipton 2023, eq. (4.5) (Kelvin-Voigt) damps both ways:
+//    ContactParams::damp_approach_only.
 #ifndef PERIDEM_CONTACT_LAW_H
 #define PERIDEM_CONTACT_LAW_H
 
 #include "peridem_bond_law.h" // Micromodulus, ParameterError
+#include "peridem_math.h"
 
 #include <cmath>
 #include <limits>
 
 namespace peridem {
 
-constexpr double kContactPi = 3.14159265358979323846;
-
 // ---------------------------------------------------------------------------------------
 // Parameters
 // ---------------------------------------------------------------------------------------
 
 // Normal contact stiffness K_n = 18 k/(pi eps^p), k the bulk modulus, eps the horizon.
-//  p = 5 ([BL] eq. 4.1 as printed, [JDBL] eq. 36), the 3D form: volumes in m^3, so
+//  p = 5 (Bhattacharya & Lipton 2023, eq. 4.1 as printed, Jha et al. 2021, eq. 36), the 3D form:
+//  volumes in m^3, so
 //    K_n (R_c - r) V_i V_j needs K_n in N/m^7 = Pa/m^5 to be a force (N); 18 k/(pi eps^5) is.
 //  p = 4, the 2D form: nodal "volumes" are areas (m^2) and forces are per unit thickness
 //    (N/m), so K_n needs N/m^6 = Pa/m^4, which 18 k/(pi eps^4) has; eps^5 in 2D gives a
@@ -85,16 +92,16 @@ inline KnForm default_kn_form(int dimension)
 }
 inline double contact_stiffness(double bulk_modulus, double horizon, KnForm form)
 {
-  return 18.0 * bulk_modulus / (kContactPi * std::pow(horizon, kn_exponent(form)));
+  return 18.0 * bulk_modulus / (kPi * std::pow(horizon, kn_exponent(form)));
 }
 // The inverse: the bulk modulus k behind a given K_n.
 inline double bulk_modulus_from_stiffness(double Kn, double horizon, KnForm form)
 {
-  return Kn * kContactPi * std::pow(horizon, kn_exponent(form)) / 18.0;
+  return Kn * kPi * std::pow(horizon, kn_exponent(form)) / 18.0;
 }
 
-// Harmonic mean 2ab/(a+b) ([BL] below eq. 4.1, [JDBL] eq. 24, 25); written as 2/(1/a + 1/b)
-// so that b = +infinity (a rigid partner) gives 2a.
+// Harmonic mean 2ab/(a+b) (Bhattacharya & Lipton 2023, below eq. 4.1, Jha et al. 2021, eq. 24, 25);
+// written as 2/(1/a + 1/b) so that b = +infinity (a rigid partner) gives 2a.
 inline double harmonic_mean(double a, double b)
 {
   return 2.0 / (1.0 / a + 1.0 / b);
@@ -107,13 +114,13 @@ inline double reduced_mass(double m_i, double m_j)
 }
 
 // K_n for two materials with bulk moduli k1, k2 and a common horizon: k_eff = harmonic mean
-// ([JDBL] eq. 25) inserted in eq. 36.
+// (Jha et al. 2021, eq. 25) inserted in eq. 36.
 inline double contact_stiffness(double k1, double k2, double horizon, KnForm form)
 {
   return contact_stiffness(harmonic_mean(k1, k2), horizon, form);
 }
 
-// Unlike horizons (not in the seeds): harmonic mean of the two K_n; equals the above when
+// Unlike horizons (not in the papers): harmonic mean of the two K_n; equals the above when
 // eps1 == eps2.
 inline double contact_stiffness_mixed(double k1, double eps1, double k2, double eps2, KnForm form)
 {
@@ -122,11 +129,11 @@ inline double contact_stiffness_mixed(double k1, double eps1, double k2, double 
 
 // Damping ratio zeta that gives restitution eps_n for a linear spring-dashpot damped during
 // the whole contact: eps_n = exp(-pi zeta/sqrt(1 - zeta^2))  <=>
-// zeta = -ln(eps_n)/sqrt(pi^2 + ln(eps_n)^2), the factor inside [JDBL] eq. (23).
+// zeta = -ln(eps_n)/sqrt(pi^2 + ln(eps_n)^2), the factor inside Jha et al. 2021, eq. (23).
 inline double damping_ratio_from_restitution(double eps_n)
 {
   const double l = std::log(eps_n);
-  return -l / std::sqrt(kContactPi * kContactPi + l * l);
+  return -l / std::sqrt(kPi * kPi + l * l);
 }
 
 // Restitution of a linear spring-dashpot with damping ratio zeta < 1 (closed form):
@@ -137,18 +144,18 @@ inline double restitution_from_damping_ratio(double zeta, bool approach_only)
 {
   if (zeta <= 0.0) return 1.0;
   const double w = std::sqrt(1.0 - zeta * zeta);
-  if (!approach_only) return std::exp(-kContactPi * zeta / w);
+  if (!approach_only) return std::exp(-kPi * zeta / w);
   return std::exp(-zeta / w * std::atan2(w, zeta));
 }
 
-// Restitution-based dashpot viscosity ([JDBL] eq. 23 nodal, eq. 28 centroid):
+// Restitution-based dashpot viscosity (Jha et al. 2021, eq. 23 nodal, eq. 28 centroid):
 //   beta_n = -2 C ln(eps_n) sqrt(kappa_eff R_c m_eq/(pi^2 + ln(eps_n)^2))
 // m_eq = harmonic mean of the two masses (eq. 24 nodes, eq. 29 grains), kappa_eff eq. 25.
 // It is 2 zeta sqrt(k m) with zeta from damping_ratio_from_restitution, k = kappa_eff R_c and
 // m = m_eq; it yields restitution eps_n exactly only if C^2 kappa_eff R_c m_eq equals the
 // actual contact spring times the reduced mass AND the dashpot acts during the whole contact
-// (see restitution_exact_C and the tests); otherwise C is a calibration constant ([JDBL] uses
-// C-bar = 100).  Units: force/velocity.
+// (see restitution_exact_C and the tests); otherwise C is a calibration constant (Jha et al. 2021
+// uses C-bar = 100).  Units: force/velocity.
 inline double restitution_damping_coefficient(double eps_n, double C, double kappa_eff, double R_c,
                                               double m_eq)
 {
@@ -166,26 +173,27 @@ inline double restitution_exact_C(double spring_k, double kappa_eff, double R_c)
 
 enum class ContactDamping {
   None,
-  Nodal,       // [BL] eq. (4.5): c = 2 r_d sqrt(k m_red), k = K_n V_i V_j
-  Restitution, // [JDBL] eq. (22)-(25): c = beta_n(eps_n, C, kappa_eff, R_c, m_eq)
+  Nodal,       // Bhattacharya & Lipton 2023, eq. (4.5): c = 2 r_d sqrt(k m_red), k = K_n V_i V_j
+  Restitution, // Jha et al. 2021, eq. (22)-(25): c = beta_n(eps_n, C, kappa_eff, R_c, m_eq)
 };
-// Centroid damping ([JDBL] eq. 26-30) acts between grain centres, not node pairs:
+// Centroid damping (Jha et al. 2021, eq. 26-30) acts between grain centres, not node pairs:
 // see centroid_damping_force() below; the nodal call then uses ContactDamping::None.
 
 enum class ContactFriction {
   None,
-  Regularized, // [BL] eq. (4.3): stick/slip with v_thr = mu|F_r| dt/m, eps_f = dt/m
-  Coulomb,     // [JDBL] eq. (19)-(20): magnitude mu|F_n| opposing the tangential velocity
+  Regularized, // Bhattacharya & Lipton 2023, eq. (4.3): stick/slip with v_thr = mu|F_r| dt/m, eps_f
+               // = dt/m
+  Coulomb,     // Jha et al. 2021, eq. (19)-(20): magnitude mu|F_n| opposing the tangential velocity
 };
 
 struct ContactParams {
-  double Kn = 0.0; // normal stiffness ([BL] eq. 4.1)
+  double Kn = 0.0; // normal stiffness (Bhattacharya & Lipton 2023, eq. 4.1)
   double Rc = 0.0; // contact radius
   ContactDamping damping = ContactDamping::None;
   double r_d = 0.0;       // Nodal: damping ratio in [0, 1]
   double eps_n = 1.0;     // Restitution: damping parameter (<= 1)
   double C = 1.0;         // Restitution: constant C > 0
-  double kappa_eff = 0.0; // Restitution: effective bulk modulus ([JDBL] eq. 25)
+  double kappa_eff = 0.0; // Restitution: effective bulk modulus (Jha et al. 2021, eq. 25)
   bool damp_approach_only = true;
   ContactFriction friction = ContactFriction::None;
   double mu = 0.0; // friction coefficient
@@ -206,8 +214,8 @@ struct ContactInput {
   double mass_i = 0.0;              // rho_i V_i
   double mass_j = std::numeric_limits<double>::infinity(); // +inf: rigid partner
   double dt = 0.0;                                         // time step (Regularized friction only)
-  // Self contact ([BL] Sec. 4.4): reference distance |xi| of two nodes of the same grain with
-  // no intact bond; < 0 (default) for nodes of different grains.
+  // Self contact (Bhattacharya & Lipton 2023, Sec. 4.4): reference distance |xi| of two nodes of
+  // the same grain with no intact bond; < 0 (default) for nodes of different grains.
   double ref_dist = -1.0;
   // Normal force magnitude for the friction bound mu|F_r|; < 0 (default): this pair's own
   // repulsion.  The wall uses it to apply the net wall repulsion of eq. (4.8) to each wall.
@@ -227,12 +235,13 @@ struct ContactResult {
   bool stick = false;   // Regularized friction in the stick branch
 };
 
-// Effective contact radius and stiffness multiplier for a pair ([BL] Sec. 4.4):
+// Effective contact radius and stiffness multiplier for a pair (Bhattacharya & Lipton 2023,
+// Sec. 4.4):
 //   different grains (ref_dist < 0) or |xi| >= R_c:  radius R_c, multiplier 1 (eq. 4.1);
 //   same grain with |xi| < R_c:  radius |xi|, multiplier R_c/|xi|.
 // Sec. 4.4 gives the force density c_w (r - R)/R e for r < R, R = min(|xi|, R_c); with the
-// seed's own identification c_w = K_n R_c (it matches eq. 4.1 for |xi| > R_c) this is
-// F = -K_n (R_c/R) (R - r) V_i V_j e.  Continuous in |xi| at |xi| = R_c.
+// Bhattacharya & Lipton's (2023) own identification c_w = K_n R_c (it matches eq. 4.1 for |xi| >
+// R_c) this is F = -K_n (R_c/R) (R - r) V_i V_j e.  Continuous in |xi| at |xi| = R_c.
 struct EffectiveRadius {
   double radius;
   double stiffness_factor;
@@ -258,11 +267,11 @@ inline double repulsion_energy(double K, double R, double r, double vol_i, doubl
 
 // The single entry point: repulsion + damping + friction between node i and partner j.
 // A wall calls it with sep = centroid of the wall segment minus x_i, vol_j = |S_l|,
-// vrel = v_i - v_wall, mass_j = +inf ([BL] Sec. 4.5 below eq. 4.8).
+// vrel = v_i - v_wall, mass_j = +inf (Bhattacharya & Lipton 2023, Sec. 4.5 below eq. 4.8).
 ContactResult contact_force(const ContactInput &in, const ContactParams &p);
 
 // ---------------------------------------------------------------------------------------
-// Centroid (grain-level) damping, [JDBL] eq. (26)-(30)
+// Centroid (grain-level) damping, Jha et al. 2021, eq. (26)-(30)
 // ---------------------------------------------------------------------------------------
 // Force on the centre of grain p due to grain p' (both given by centre position z_c and velocity
 // v_c), acting only while the centres approach and while dist(grains) < R_c (the caller checks
@@ -302,7 +311,7 @@ inline double grain_node_share(double node_volume, double grain_volume)
 //            smallest nodal mass m: dt_c = sqrt(2 m/(n_c K_n V^2)) times the damping factor.
 //  combined: omega^2 <= omega_b^2 + omega_c^2  =>  dt = 1/sqrt(1/dt_b^2 + 1/dt_c^2);
 //            recommended = safety * dt.
-// Measured thresholds against this estimate: doc/pair_peridem_contact.rst (issue 10).
+// Measured thresholds against this estimate: doc/pair_peridem_contact.rst.
 struct TimeStepInput {
   int dimension = 3;
   double rho = 0.0; // density

@@ -1,5 +1,6 @@
 // 3D grain shapes, lattice and bonds (projection argument for extrusions).
 #include "peridem_geometry_3d.h"
+#include "peridem_math.h"
 #include "peridem_geometry_discretize.h"
 #include "peridem_geometry_visibility.h"
 
@@ -9,8 +10,6 @@
 namespace peridem {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void requirePositive(double v, const char *what)
 {

@@ -4,7 +4,8 @@
 // spacing h clipped to the shape (nodal volume h^3), cell-list bonds within
 // the horizon, and bond visibility for nonconvex extrusions: a prism
 // P x [z0, z1] is convex in z, so a straight segment stays inside iff both
-// ends have z in [z0, z1] and its projection stays in P (seed §5 in the plane).
+// ends have z in [z0, z1] and its projection stays in P (Bhattacharya & Lipton 2023, §5 in the
+// plane).
 #ifndef PERIDEM_GEOMETRY_3D_H
 #define PERIDEM_GEOMETRY_3D_H
 
@@ -69,7 +70,7 @@ Nodes3D latticeNodes3D(const Shape3D &s, double h, const Vec3 &offset = Vec3());
 bool segmentInsideExact3D(const Shape3D &s, const Vec3 &p, const Vec3 &q);
 
 // Bonds within the horizon (cell list), pruned for nonconvex extrusions with
-// the seed §5 method on the projection (Seed) or the exact test (Exact).
+// the method of Bhattacharya & Lipton 2023, §5, on the projection (Seed) or the exact test (Exact).
 std::vector<Bond> createBonds3D(const Shape3D &s, const std::vector<Vec3> &x, double eps,
                                 Pruning pruning = Pruning::Seed);
 

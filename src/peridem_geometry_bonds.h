@@ -1,8 +1,8 @@
 // Peridynamic bonds inside one grain: all node pairs within the horizon
 // (|xi| <= eps, i < j, each pair once), found with a cell list so the cost is
 // linear in the number of nodes, optionally pruned to the bonds whose segment
-// stays in the grain (grain-shape seed §5), and removal of bonds that cross
-// pre-notches / cracks (seed §6.2, §6.4: "bonds across the notch are removed
+// stays in the grain (Bhattacharya & Lipton 2023, §5), and removal of bonds that cross
+// pre-notches / cracks (Bhattacharya & Lipton 2023, §6.2, §6.4: "bonds across the notch are removed
 // in the reference configuration").
 #ifndef PERIDEM_GEOMETRY_BONDS_H
 #define PERIDEM_GEOMETRY_BONDS_H
@@ -32,7 +32,7 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<Vec2> &x, double eps);
 
 enum class Pruning {
   None,  // keep every pair within the horizon (convex grains)
-  Seed,  // grain-shape seed §5 (extended boundary + cusp bisectors)
+  Seed,  // Bhattacharya & Lipton 2023, §5 (extended boundary + cusp bisectors)
   Exact, // exact segment-in-shape reference test
 };
 

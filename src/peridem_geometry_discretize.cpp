@@ -1,5 +1,5 @@
 // Lattice discretization of a 2D grain with h^2 or exactly clipped nodal
-// volumes (grain-shape seed §6-7: uniform mesh size h).
+// volumes (Bhattacharya & Lipton 2023, §6-7: uniform mesh size h).
 #include "peridem_geometry_discretize.h"
 
 #include <algorithm>

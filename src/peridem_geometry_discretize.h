@@ -1,9 +1,9 @@
 // Discretization of a 2D grain into peridynamic nodes with nodal volumes.
 //
-// (a) Regular square lattice clipped to the shape (grain-shape seed §6-7 use
+// (a) Regular square lattice clipped to the shape (Bhattacharya & Lipton 2023, §6-7 use
 //     uniform mesh size h); the nodal volume is the cell area h^2 or,
 //     optionally, the exact area of the lattice cell clipped to the shape.
-// (b) Gmsh meshes (PeriDEM seed §3.1): nodes at the mesh vertices, nodal
+// (b) Gmsh meshes (Jha et al. 2021, §3.1): nodes at the mesh vertices, nodal
 //     volume V_i = sum over elements T_e containing i of int_{T_e} phi_i dx
 //     (eq. 31) with the P1 (triangle) / Q1 (quad) interpolation functions.
 #ifndef PERIDEM_GEOMETRY_DISCRETIZE_H
@@ -12,6 +12,7 @@
 #include "peridem_geometry_polygon.h"
 
 #include <array>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,9 @@ struct Mesh2D {
 // (missing file, binary or other versions, malformed lines, unknown node tags,
 // higher-order elements, no 2D element) name the file and line.
 Mesh2D readGmshMesh(const std::string &path);
+// The same from a stream (e.g. a file read on one MPI rank and broadcast); `path` names it in
+// messages.
+Mesh2D parseGmshMesh(std::istream &in, const std::string &path);
 
 // Nodes at mesh vertices with volumes from eq. 31: each triangle gives |T|/3 to
 // each of its vertices, each quad the integrals of its bilinear shape

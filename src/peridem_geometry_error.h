@@ -2,8 +2,8 @@
 //
 // The geometry code (shapes, discretization, bonds) must not depend on LAMMPS,
 // so it reports bad input by throwing this exception; the LAMMPS commands catch
-// it and turn the message into a LAMMPS error (issue 4, "Bad input gets a clear
-// error").
+// it and turn the message into a LAMMPS error (bad input gets a clear
+// error).
 #ifndef PERIDEM_GEOMETRY_ERROR_H
 #define PERIDEM_GEOMETRY_ERROR_H
 

@@ -1,5 +1,5 @@
 // Gmsh .msh import (ASCII 2.2 and 4.1) and nodal volumes from the P1/Q1
-// interpolation functions, PeriDEM seed §3.1 eq. 31.
+// interpolation functions, Jha et al. 2021, §3.1 eq. 31.
 #include "peridem_geometry_discretize.h"
 
 #include <cmath>
@@ -176,6 +176,11 @@ Mesh2D readGmshMesh(const std::string &path)
 {
   std::ifstream in(path);
   if (!in) throw GeometryError("cannot open Gmsh file '" + path + "'");
+  return parseGmshMesh(in, path);
+}
+
+Mesh2D parseGmshMesh(std::istream &in, const std::string &path)
+{
   MshReader r(in, path);
   MshData d;
   std::string version;

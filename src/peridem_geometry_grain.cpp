@@ -1,5 +1,5 @@
-// Grain construction with input validation (issue 4 "Bad input gets a clear
-// error"); the LAMMPS glue turns GeometryError into a LAMMPS error.
+// Grain construction with input validation (bad input gets a clear
+// error); the LAMMPS glue turns GeometryError into a LAMMPS error.
 #include "peridem_geometry_grain.h"
 #include "peridem_geometry_shapes.h"
 

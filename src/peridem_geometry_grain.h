@@ -1,6 +1,6 @@
 // One-call grain construction for the LAMMPS commands: shape + spacing +
 // horizon -> nodes (reference positions, volumes) and bonds, with the input
-// checks of issue 4 ("spacing larger than the grain", "horizon smaller than
+// checks ("spacing larger than the grain", "horizon smaller than
 // the spacing", unknown shape or file, invalid polygon) reported as
 // GeometryError with a clear message.
 #ifndef PERIDEM_GEOMETRY_GRAIN_H
@@ -18,7 +18,7 @@ namespace peridem {
 
 struct GrainOptions {
   LatticeOptions lattice;          // offset and nodal volume rule
-  Pruning pruning = Pruning::Seed; // seed §5 by default
+  Pruning pruning = Pruning::Seed; // Bhattacharya & Lipton 2023, §5 by default
   std::vector<CutSegment> cuts;    // pre-notches / cracks (grain frame)
 };
 
@@ -37,7 +37,7 @@ Grain2D discretizeGrain(const Polygon &shape, double h, double eps, const GrainO
 // Built-in shape by name (see builtinShapes()).
 Grain2D discretizeShape(const std::string &name, const std::map<std::string, double> &params,
                         double h, double eps, const GrainOptions &opt = {});
-// User polygon file (doc/peridem_polygon_format.md).
+// User polygon file (doc/peridem_polygon_format.rst).
 Grain2D discretizePolygonFile(const std::string &path, double h, double eps,
                               const GrainOptions &opt = {});
 // Gmsh mesh grain: nodes/volumes from eq. 31. Bonds are pruned against

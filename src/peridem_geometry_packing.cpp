@@ -1,6 +1,7 @@
-// Jammed polydisperse disk/sphere packings (grain-shape seed §7-7.1); see the
+// Jammed polydisperse disk/sphere packings (Bhattacharya & Lipton 2023, §7-7.1); see the
 // header for the method and its references.
 #include "peridem_geometry_packing.h"
+#include "peridem_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,7 @@ std::string str(double v)
 
 double ballVolume(double r, int dim)
 {
-  return dim == 2 ? M_PI * r * r : 4.0 / 3.0 * M_PI * r * r * r;
+  return dim == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
 }
 
 /* Cell grid over [lo, hi] (cells of side >= `size`; points outside are put in
@@ -155,7 +156,7 @@ double PackingRandom::normal()
 {
   // Box-Muller; 1 - u keeps the logarithm finite
   const double u1 = 1.0 - uniform(), u2 = uniform();
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
 }
 
 std::vector<double> drawRadii(const RadiusDistribution &dist, std::size_t n, std::uint64_t seed)
@@ -410,7 +411,7 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
   for (int d = 0; d < top; d++) base *= opt.hi[d] - opt.lo[d];
   const double height = opt.hi[top] - opt.lo[top];
   // densest packings: hexagonal (2D), fcc (3D); beyond them no bed can fit
-  const double densest = D == 2 ? M_PI / (2.0 * std::sqrt(3.0)) : M_PI / (3.0 * std::sqrt(2.0));
+  const double densest = D == 2 ? kPi / (2.0 * std::sqrt(3.0)) : kPi / (3.0 * std::sqrt(2.0));
   if (volume / (base * height) > densest)
     throw GeometryError("the disks need a packing fraction of " + str(volume / (base * height)) +
                         " to fit in the container, beyond the densest packing (" + str(densest) +
@@ -584,9 +585,9 @@ bool directionsBlockEveryMove(const std::vector<std::array<double, 3>> &n, int d
     std::vector<double> ang(k);
     for (std::size_t i = 0; i < k; i++) ang[i] = std::atan2(n[i][1], n[i][0]);
     std::sort(ang.begin(), ang.end());
-    double gap = ang.front() + 2.0 * M_PI - ang.back();
+    double gap = ang.front() + 2.0 * kPi - ang.back();
     for (std::size_t i = 1; i < k; i++) gap = std::max(gap, ang[i] - ang[i - 1]);
-    return gap < M_PI - eps;
+    return gap < kPi - eps;
   }
   // 3D: the cone {u : u . n_k <= 0 for all k} is {0} iff no candidate works.
   // A nonzero cone has an extreme ray normal to two contact directions

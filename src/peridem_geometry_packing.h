@@ -1,5 +1,5 @@
 // Jammed polydisperse disk (2D) and sphere (3D) packings of a rectangular
-// container: the "security disks" of the grain-shape seed §7-7.1.
+// container: the "security disks" of Bhattacharya & Lipton 2023, §7-7.1.
 //
 // The seed (Bhattacharya and Lipton 2023, §7) starts a bed from disks that
 // are jammed (Definition 7.1: no disk can be displaced without overlapping
@@ -97,7 +97,7 @@ GapReport smallestGaps(const Packing &p);
 // packings are looser (walls order the first layer).
 double fractionInside(const Packing &p, const double *lo, const double *hi, int samples);
 
-// Local jamming (seed Definition 7.1 applied to one disk, the others fixed):
+// Local jamming (Bhattacharya & Lipton 2023, Definition 7.1 applied to one disk, the others fixed):
 // disk i cannot move iff the unit directions to its contacts (disks with gap
 // <= tau (r_i + r_j) / 2, walls with gap <= tau r_i) lie in no closed half-plane
 // (half-space in 3D), i.e. every displacement u has u . n_k > 0 for some k.

@@ -1,5 +1,5 @@
 // Polygon-with-holes geometry: area, centroid, point location, transforms and
-// validity checks for grain shapes (grain-shape seed §5, §7.2).
+// validity checks for grain shapes (Bhattacharya & Lipton 2023, §5, §7.2).
 #include "peridem_geometry_polygon.h"
 #include "peridem_geometry_predicates.h"
 

@@ -1,10 +1,10 @@
 // 2D polygons with holes: the grain shapes of the PERIDEM geometry library.
 //
-// A 2D grain D is represented, as in the grain-shape seed §5, by a piecewise
+// A 2D grain D is represented, as in Bhattacharya & Lipton 2023, §5, by a piecewise
 // straight boundary: a closed outer polygon p^1 ... p^n oriented
 // counter-clockwise plus optional holes (annular grains, §7.2) oriented
 // clockwise. With this convention the material is always on the LEFT of every
-// directed boundary edge, which is what the seed's nonconvex-cusp criterion
+// directed boundary edge, which is what Bhattacharya & Lipton's (2023) nonconvex-cusp criterion
 // v_{i-1} x v_i < 0 assumes. The constructor normalizes the orientation, so
 // callers can pass rings in either order.
 #ifndef PERIDEM_GEOMETRY_POLYGON_H
@@ -36,7 +36,7 @@ inline double dot(const Vec2 &a, const Vec2 &b)
 {
   return a.x * b.x + a.y * b.y;
 }
-// z-component of the 2D cross product (seed §5 "v_{i-1} x v_i").
+// z-component of the 2D cross product (Bhattacharya & Lipton 2023, §5 "v_{i-1} x v_i").
 inline double cross(const Vec2 &a, const Vec2 &b)
 {
   return a.x * b.y - a.y * b.x;
@@ -75,8 +75,8 @@ class Polygon {
   // Area centroid of the material (holes subtracted).
   Vec2 centroid() const;
   BoundingBox boundingBox() const;
-  // Largest |x| over the shape (seed §5 uses sup{|x| : x in D} for the length
-  // of a cusp bisector that does not hit the boundary).
+  // Largest |x| over the shape (Bhattacharya & Lipton 2023, §5 uses sup{|x| : x in D} for the
+  // length of a cusp bisector that does not hit the boundary).
   double maxRadius() const;
 
   // Closed point-in-shape: boundary points are inside. Points within distance

@@ -1,5 +1,5 @@
 // Exact orientation predicate and segment tests built on it.
-// See peridem_geometry_predicates.h for why exactness matters (seed §5).
+// See peridem_geometry_predicates.h for why exactness matters (Bhattacharya & Lipton 2023, §5).
 #include "peridem_geometry_predicates.h"
 #include "peridem_geometry_polygon.h"
 

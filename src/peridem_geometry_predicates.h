@@ -1,6 +1,6 @@
 // Robust geometric predicates for the grain geometry library.
 //
-// Bond pruning (grain-shape seed §5) is decided by the sign of small
+// Bond pruning (Bhattacharya & Lipton 2023, §5) is decided by the sign of small
 // determinants. Bonds that start or end on the boundary, run along an edge or
 // pass exactly through a corner are common on a lattice, and a naive double
 // evaluation can give the wrong sign there. orient2d() is therefore exact for

@@ -1,6 +1,7 @@
-// Built-in grain shapes (grain-shape seed §6.2-6.4, §7.2) and the polygon file
-// reader (format in doc/peridem_polygon_format.md).
+// Built-in grain shapes (Bhattacharya & Lipton 2023, §6.2-6.4, §7.2) and the polygon file
+// reader (format in doc/peridem_polygon_format.rst).
 #include "peridem_geometry_shapes.h"
+#include "peridem_math.h"
 
 #include <cmath>
 #include <fstream>
@@ -11,8 +12,6 @@
 namespace peridem {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void requirePositive(double v, const char *what)
 {
@@ -84,7 +83,7 @@ Polygon makePlus(double radius, double armWidth)
   const double a = 0.5 * armWidth, r = radius;
   if (!(a < r)) throw GeometryError("plus shape needs arm_width < 2 * radius");
   // 12 vertices, CCW, starting at the tip of the +x arm; the four reflex
-  // corners (a, a), (-a, a), ... are the seed's nonconvex cusps (§5).
+  // corners (a, a), (-a, a), ... are Bhattacharya & Lipton's (2023) nonconvex cusps (§5).
   return Polygon({{r, -a},
                   {r, a},
                   {a, a},
@@ -165,7 +164,7 @@ const std::vector<ShapeInfo> &builtinShapes()
   static const std::vector<ShapeInfo> shapes = {
       {"disk", "polygonal disk", {{"radius", 1.0, "radius R"}, {"segments", 64, "boundary edges"}}},
       {"square",
-       "square inscribed in a disk of radius R: side sqrt(2) R (seed §7.2)",
+       "square inscribed in a disk of radius R: side sqrt(2) R (Bhattacharya & Lipton 2023, §7.2)",
        {{"side", std::sqrt(2.0), "side length"}}},
       {"rectangle",
        "axis-aligned rectangle",
@@ -175,25 +174,28 @@ const std::vector<ShapeInfo> &builtinShapes()
        {{"radius", 1.0, "circumradius"}, {"sides", 6, "number of sides"}}},
       {"hexagon", "regular hexagon with a vertex on +x", {{"radius", 1.0, "circumradius"}}},
       {"plus",
-       "plus/cross shape (seed §6.3, §7.2): half length R, arm width 2cR, c = 0.2",
+       "plus/cross shape (Bhattacharya & Lipton 2023, §6.3, §7.2): half length R, arm width 2cR, c "
+       "= 0.2",
        {{"radius", 1.0, "half length R"}, {"arm_width", 0.4, "full arm width"}}},
       {"ring",
-       "annulus (seed §7.2): inner radius tau R, tau = 0.6",
+       "annulus (Bhattacharya & Lipton 2023, §7.2): inner radius tau R, tau = 0.6",
        {{"radius", 1.0, "outer radius R"},
         {"inner_radius", 0.6, "inner radius"},
         {"segments", 64, "edges per circle"}}},
       {"perturbed_disk",
-       "randomly perturbed disk (seed §7.2): r_i = R(1 - X_i), X_i ~ U[0, 1 - phi]",
+       "randomly perturbed disk (Bhattacharya & Lipton 2023, §7.2): r_i = R(1 - X_i), X_i ~ U[0, 1 "
+       "- phi]",
        {{"radius", 1.0, "radius R"},
         {"vertices", 20, "number of vertices N"},
         {"roundness", 0.6, "roundness phi"},
         {"seed", 1, "random seed"}}},
       {"neck",
-       "concave hourglass pinched at x = 0 (cf. PeriDEM seed Fig. 18b: R = 1, half neck "
+       "concave hourglass pinched at x = 0 (cf. Jha et al. 2021, Fig. 18b: R = 1, half neck "
        "width w = 0.5 R)",
        {{"length", 2.0, "x size"}, {"width", 2.0, "y size"}, {"neck_width", 1.0, "width at x=0"}}},
       {"notched_plate",
-       "plate with a rectangular notch from the middle of the left edge (seed §6.4)",
+       "plate with a rectangular notch from the middle of the left edge (Bhattacharya & Lipton "
+       "2023, §6.4)",
        {{"width", 1.0, "x size"},
         {"height", 1.0, "y size"},
         {"notch_length", 0.5, "notch depth from the edge"},

@@ -1,6 +1,6 @@
 // Built-in parametric grain shapes and the user polygon file reader.
 //
-// The shapes are those of the grain-shape seed §6.2-6.4 and §7.2 (perturbed
+// The shapes are those of Bhattacharya & Lipton 2023, §6.2-6.4 and §7.2 (perturbed
 // disks, squares, plus shapes, rings, notched plates) plus a few common extras
 // (rectangle, regular polygon/hexagon, concave "neck"). Every shape is centred
 // at the origin; place it with Polygon::rotate()/translate().
@@ -59,7 +59,7 @@ std::string builtinShapeList();
 // the valid choices. The result is validated.
 Polygon makeShape(const std::string &name, const std::map<std::string, double> &params = {});
 
-// User polygon files (format: doc/peridem_polygon_format.md). Errors name the
+// User polygon files (format: doc/peridem_polygon_format.rst). Errors name the
 // file and the line. The result is validated.
 Polygon readPolygonFile(const std::string &path);
 Polygon parsePolygon(std::istream &in, const std::string &sourceName);

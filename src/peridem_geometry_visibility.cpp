@@ -1,4 +1,4 @@
-// Exact segment-in-shape test and the seed §5 non-bond detector.
+// Exact segment-in-shape test and the non-bond detector of Bhattacharya & Lipton 2023, §5.
 #include "peridem_geometry_visibility.h"
 #include "peridem_geometry_predicates.h"
 
@@ -83,10 +83,10 @@ SeedPruner::SeedPruner(const Polygon &D, double delta)
     std::vector<Vec2> pbar(n);
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 &prev = r[(i + n - 1) % n], &p = r[i], &next = r[(i + 1) % n];
-      // Unit tangents v_{i-1}, v_i of the boundary (seed §5).
+      // Unit tangents v_{i-1}, v_i of the boundary (Bhattacharya & Lipton 2023, §5).
       const Vec2 vin = (p - prev) / (p - prev).norm();
       const Vec2 vout = (next - p) / (next - p).norm();
-      // Seed §5: p^i is a nonconvex cusp iff v_{i-1} x v_i < 0 (decided with
+      // Bhattacharya & Lipton 2023, §5: p^i is a nonconvex cusp iff v_{i-1} x v_i < 0 (decided with
       // the exact predicate). n_i is the unit bisector of the OUTER angle. The
       // printed case formulas have sign/normalisation typos (the convex case
       // reads like a tangent, the straight case like the inward normal for a
@@ -141,13 +141,13 @@ SeedPruner::SeedPruner(const Polygon &D, double delta)
 
 bool SeedPruner::keeps(const Vec2 &x, const Vec2 &y) const
 {
-  if (convex()) return true; // seed §5: C_x is empty for convex D
+  if (convex()) return true; // Bhattacharya & Lipton 2023, §5: C_x is empty for convex D
   const double x0 = std::min(x.x, y.x), x1 = std::max(x.x, y.x);
   const double y0 = std::min(x.y, y.y), y1 = std::max(x.y, y.y);
   auto overlaps = [&](const Box &b) {
     return b.x0 <= x1 && x0 <= b.x1 && b.y0 <= y1 && y0 <= b.y1;
   };
-  // Seed §5: y in C_x iff segment xy meets a cusp bisector p^i q^i or an
+  // Bhattacharya & Lipton 2023, §5: y in C_x iff segment xy meets a cusp bisector p^i q^i or an
   // extended boundary edge pbar^i pbar^{i+1}. The bisector is taken open (its
   // points strictly between p^i and q^i lie in the exterior, the ends lie on
   // the boundary), so bonds through a reflex corner that stay in D are kept.

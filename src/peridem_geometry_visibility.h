@@ -1,12 +1,12 @@
 // Bond visibility inside a nonconvex grain: is the straight segment between two
-// nodes inside the grain? (grain-shape seed §5: a bond whose segment leaves
+// nodes inside the grain? (Bhattacharya & Lipton 2023, §5: a bond whose segment leaves
 // the domain D is a "non-bond" and is removed in the reference configuration.)
 //
 // Two independent implementations:
 //  * segmentInsideExact(): the reference answer, a purely combinatorial test
 //    with exact orientation predicates (closed set: boundary counts as inside,
 //    so bonds along an edge or through a reflex corner are kept).
-//  * SeedPruner: the method of seed §5, built from the extended boundary
+//  * SeedPruner: the method of Bhattacharya & Lipton 2023, §5, built from the extended boundary
 //    (vertices pushed out by delta along the outer angle bisectors) and the
 //    bisectors of the nonconvex cusps; a bond is a non-bond iff it meets them.
 // The unit tests show both give the same bond set on every built-in shape.
@@ -24,7 +24,7 @@ namespace peridem {
 // (p and q included). Exact for double input.
 bool segmentInsideExact(const Polygon &shape, const Vec2 &p, const Vec2 &q);
 
-// Seed §5 non-bond detector for one (fixed) polygon.
+// Bhattacharya & Lipton 2023, §5 non-bond detector for one (fixed) polygon.
 class SeedPruner {
  public:
   struct Segment {

@@ -4,6 +4,7 @@
 ------------------------------------------------------------------------- */
 
 #include "peridem_grain_shape.h"
+#include "peridem_math.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -33,7 +34,7 @@ PrincipalAxes principal_axes(const double s[6])
 
 double axis_angle_xy(const double axis[3])
 {
-  double a = std::atan2(axis[1], axis[0]) * 180.0 / M_PI;
+  double a = std::atan2(axis[1], axis[0]) * 180.0 / kPi;
   if (a > 90.0) a -= 180.0;
   if (a <= -90.0) a += 180.0;
   return a;

@@ -1,7 +1,8 @@
 // PERIDEM: the linear peridynamic solid (state-based, LPS), pure functions (no LAMMPS).
 //
-// References (shared/seeds/):
-//  [JDBL] Jha, Desai, Bhattacharya & Lipton, "PeriDEM": eq. (5)-(9) force state, weighted
+// References:
+//  Jha, Desai, Bhattacharya & Lipton 2021, "PeriDEM", J. Mech. Phys. Solids 151, 104376: eq.
+//  (5)-(9) force state, weighted
 //         volume m_x, dilation theta_x, deviatoric extension e^d; eq. (10) critical stretch
 //         (lps_critical_stretch in peridem_bond_law.h); eq. (33)-(34) discrete sums.
 //  Silling, Epton, Weckner, Xu & Askari, J. Elasticity 88 (2007): the LPS in 3D.
@@ -9,16 +10,16 @@
 //
 // In d dimensions, with influence omega(r), partial-volume factor beta and extension
 // e = |y| - r of a bond of reference length r (sums over the intact bonds of node i):
-//   m_i     = sum_j omega beta r^2 V_j                       (weighted volume, [JDBL] eq. 8)
-//   theta_i = (d/m_i) sum_j omega beta r e V_j               (dilation, [JDBL] eq. 34)
+//   m_i     = sum_j omega beta r^2 V_j                       (weighted volume, Jha et al. 2021, eq.
+//   8) theta_i = (d/m_i) sum_j omega beta r e V_j               (dilation, Jha et al. 2021, eq. 34)
 //   W_i     = a/2 theta_i^2 + b/(2 m_i) sum_j omega beta (e - theta_i r/d)^2 V_j
 // Matching W to linear elasticity (isotropic averages <n_a n_b> = delta/d,
 // <(n.E n)^2> = 2 E:E/(d(d+2)) for traceless E) gives b = d(d+2) G and a = the d-dimensional
 // bulk modulus: 3D a = K, b = 15 G; 2D plane strain a = lambda + G = K + G/3, b = 8 G; 2D
 // plane stress a = lambda* + G with lambda* = 2 lambda G/(lambda + 2G). dW/de_j gives the
 // scalar force state  t_i(j) = omega beta [(d a - b/d) theta_i r / m_i + b e / m_i]
-// (3D: (3K - 5G) theta r/m + 15 G e/m, [JDBL] eq. 9 and LAMMPS peri/lps), and the force of
-// bond ij on node i, along y_j - y_i, is ([JDBL] eq. 33 times V_i)
+// (3D: (3K - 5G) theta r/m + 15 G e/m, Jha et al. 2021, eq. 9 and LAMMPS peri/lps), and the force
+// of bond ij on node i, along y_j - y_i, is (Jha et al. 2021, eq. 33 times V_i)
 //   F_ij = V_i V_j omega beta [c_vol (theta_i/m_i + theta_j/m_j) r + c_dev (1/m_i + 1/m_j) e]
 // with c_vol = d a - b/d, c_dev = b.
 #ifndef PERIDEM_LPS_LAW_H
@@ -28,7 +29,7 @@
 
 namespace peridem {
 
-// Influence function omega(r) ([JDBL] eq. 7 names it J(r/eps)).
+// Influence function omega(r) (Jha et al. 2021, eq. 7 names it J(r/eps)).
 //  Conic:    1 - r/eps, the paper's.
 //  Constant: 1.
 //  Inverse:  1/r, LAMMPS peri/lps's (influence_function() in pair_peri_lps.cpp).
@@ -49,7 +50,8 @@ inline double influence_value(Influence w, double r, double horizon)
 
 // Which constants a 2D model uses (3D ignores it).
 //  PlaneStrain (default) and PlaneStress: d = 2 with the 2D bulk modulus above.
-//  ThreeD: the 3D constants (d = 3, a = K, b = 15 G) applied to 2D sums, as [JDBL] eq. (7)-(9)
+//  ThreeD: the 3D constants (d = 3, a = K, b = 15 G) applied to 2D sums, as Jha et al. 2021, eq.
+//  (7)-(9)
 //          are written and as its reference code (prashjha/PeriDEM) evaluates them in 2D; for
 //          comparing with that paper's numbers only: the resulting 2D material is not the one
 //          K and G describe.

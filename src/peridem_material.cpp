@@ -1,4 +1,4 @@
-// PERIDEM: material definitions and *.peridem reader (format: doc/peridem_material_format.md).
+// PERIDEM: material definitions and *.peridem reader (format: doc/peridem_material_format.rst).
 #include "peridem_material.h"
 
 #include <cmath>

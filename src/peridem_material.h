@@ -1,5 +1,5 @@
 // PERIDEM: material definitions and the *.peridem material file reader (no LAMMPS dependency).
-// File format: doc/peridem_material_format.md.  Physics references: see peridem_bond_law.h.
+// File format: doc/peridem_material_format.rst.  Physics references: see peridem_bond_law.h.
 #ifndef PERIDEM_MATERIAL_H
 #define PERIDEM_MATERIAL_H
 
@@ -12,7 +12,8 @@ namespace peridem {
 
 // Isotropic (3D, material) elastic constants.  A constant that is not known is NaN: a material
 // may be given by E alone or K alone, which is all bond-based peridynamics needs
-// ([BL] Remark 1 fixes nu), but the state-based (LPS) model of [JDBL] eq. (7) needs K and G.
+// (Bhattacharya & Lipton 2023, Remark 1 fixes nu), but the state-based (LPS) model of Jha et al.
+// 2021, eq. (7) needs K and G.
 struct ElasticConstants {
   double E;              // Young's modulus
   double nu;             // Poisson ratio
@@ -34,7 +35,8 @@ ElasticConstants complete_elastic_constants(double E, double nu, double K, doubl
 //   plane stress (thin sheet, sigma_zz = 0): K2 = E/(2(1-nu));  E = 4 K2 G/(K2+G), nu =
 //   (K2-G)/(K2+G) plane strain (eps_zz = 0):  K2 = E/(2(1+nu)(1-2nu)) = lambda + G;
 //                               nu = (K2-G)/(2 K2),   E = 2G(1+nu) = G(3 K2 - G)/K2
-// 2D bond-based peridynamics ([BL] Table 1, nu = 1/3) is plane stress, the default.
+// 2D bond-based peridynamics (Bhattacharya & Lipton 2023, Table 1, nu = 1/3) is plane stress, the
+// default.
 enum class PlaneCondition { PlaneStress, PlaneStrain };
 struct PlanarModuli {
   double K2;
@@ -55,14 +57,16 @@ struct Material {
   ElasticConstants elastic{}; // 3D isotropic constants, possibly partial (see above)
   double G_c = 0.0;           // critical energy release rate (fracture energy)
   double horizon = 0.0;       // 0 = not given in the file (must then come from elsewhere)
-  Micromodulus micromodulus = Micromodulus::Constant; // w of [BL] eq. 3.2 / J of [JDBL] eq. 7
+  Micromodulus micromodulus = Micromodulus::Constant; // w of Bhattacharya & Lipton 2023, eq. 3.2 /
+                                                      // J of Jha et al. 2021, eq. 7
   std::string origin; // "file:line" where it was defined (for messages)
-  // Contact settings (Kn, Rc, friction, damping of [JDBL] Sec. 2.2-2.3) are to be added here.
+  // Contact settings (Kn, Rc, friction, damping of Jha et al. 2021, Sec. 2.2-2.3) are to be added
+  // here.
 };
 
-// Bond-based constants for a material in the given dimension: 2D uses E (plane stress, [BL]
-// Table 1) if known, else K; 3D uses K (isotropic-extension energy, [SA05]) if known, else E.
-// horizon > 0 overrides the material's horizon; ParameterError if neither is set.
+// Bond-based constants for a material in the given dimension: 2D uses E (plane stress, Bhattacharya
+// & Lipton 2023 Table 1) if known, else K; 3D uses K (isotropic-extension energy, [SA05]) if known,
+// else E. horizon > 0 overrides the material's horizon; ParameterError if neither is set.
 BondConstants material_bond_constants(const Material &m, int dimension, double horizon = 0.0);
 
 // Unit styles accepted in the "units" line (LAMMPS unit style names).

@@ -1,5 +1,6 @@
 // PERIDEM: analytic rigid walls (formulas and references in peridem_wall_geometry.h).
 #include "peridem_wall_geometry.h"
+#include "peridem_math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,6 @@
 namespace peridem {
 
 namespace {
-
-constexpr double kPi = kContactPi;
 
 // phi - sin(phi), accurate also for small phi (series below 0.1).
 double phi_minus_sin(double phi)
@@ -190,7 +189,7 @@ namespace {
 // F(T) = int_0^T f(t) sin t dt with f(t) = t - sin t cos t - 2/3 sin^3 t, so that the 2D
 // single-wall potential is U = K_n V R^4 F(theta), theta = acos(d/R) (substitute s = R cos t
 // in int_d^R (R|S(s)| - M(s)) ds, |S| = R^2 (t - sin t cos t), M = 2/3 R^3 sin^3 t).
-// F(T) = T^7/35 - 13 T^9/1260 + ...: the closed form cancels to nothing near d = R (issue 9:
+// F(T) = T^7/35 - 13 T^9/1260 + ...: the closed form cancels to nothing near d = R (measured:
 // -5e-10 per node where the value is 1e-46), so small T use the power series, whose
 // coefficients follow from writing f sin t as a sum of sines and cosines of t, 2t, 3t, 4t:
 //   F = sum_k a_k T^(2k+1), a_k = (-1)^k/(2k+1)! [1 - (2k+1) - 1/4 + 3^(2k+1)/12
@@ -223,6 +222,19 @@ double wall_potential_2d_F(double T)
   return s1 - T * std::cos(T) - 0.25 * (s1 - s3 / 3.0) - 0.25 * T + s2 / 6.0 - s4 / 48.0;
 }
 
+// Portable bit tests on a wall mask (kMaxWalls bits; no compiler builtins).
+bool single_wall(unsigned mask)
+{
+  return mask != 0 && (mask & (mask - 1)) == 0;
+}
+
+int lowest_wall(unsigned mask)
+{
+  int w = 0;
+  while (w < kMaxWalls && !(mask & (1u << w))) ++w;
+  return w;
+}
+
 } // namespace
 
 double wall_potential(int dimension, double Kn, double R, double vol, double d)
@@ -236,12 +248,12 @@ double wall_potential(int dimension, double Kn, double R, double vol, double d)
     return Kn * vol * R * R * R * R * wall_potential_2d_F(theta);
   }
   // 3D: R int_d^R |S| ds - int_d^R M ds = pi h^4 (R/6 - h/20) with h = R - d: the
-  // polynomial in d of the closed form, rewritten in h without cancellation (issue 9)
+  // polynomial in d of the closed form, rewritten in h without cancellation
   return Kn * vol * kPi * h * h * h * h * (R / 6.0 - h / 20.0);
 }
 
 /* ---------------------------------------------------------------------------------------
-   container: inclusion-exclusion terms of [BL] eq. (4.8)
+   container: inclusion-exclusion terms of Bhattacharya & Lipton 2023, eq. (4.8)
 ------------------------------------------------------------------------------------------ */
 
 int wall_partners(const WallBox &box, const double p[3], double R, WallPartner *out)
@@ -316,7 +328,8 @@ WallContactResult wall_contact_force(const WallBox &box, const WallContactInput 
   for (int w = 0; w < 2 * box.dimension; ++w)
     if (box.active[w]) res.min_distance = std::min(res.min_distance, wall_distance(box, w, in.x));
 
-  // 1. Repulsion: signed superposition of the region forces, [BL] eq. (4.8).  Each region's
+  // 1. Repulsion: signed superposition of the region forces, Bhattacharya & Lipton 2023, eq. (4.8).
+  // Each region's
   //    force lies in the span of its walls' normals; its component along a wall's axis is that
   //    wall's share (normal load N_w, used for friction and for the reaction force).
   ContactParams rep = params;
@@ -336,8 +349,8 @@ WallContactResult wall_contact_force(const WallBox &box, const WallContactInput 
     const ContactResult cr = contact_force(ci, rep);
     const double sg = wp.sign;
     for (int k = 0; k < 3; ++k) res.f[k] += sg * cr.f[k];
-    if (__builtin_popcount(wp.walls) == 1) {
-      const int w = __builtin_ctz(wp.walls);
+    if (single_wall(wp.walls)) {
+      const int w = lowest_wall(wp.walls);
       res.energy +=
           wall_potential(box.dimension, params.Kn, R, in.vol, wall_distance(box, w, in.x));
     } else {
@@ -354,7 +367,8 @@ WallContactResult wall_contact_force(const WallBox &box, const WallContactInput 
     res.f_wall[w][w / 2] = outward * load[w];
   }
 
-  // 2. Damping and friction, wall by wall ([BL] below eq. 4.8: eq. 4.3 and 4.5 with the wall's
+  // 2. Damping and friction, wall by wall (Bhattacharya & Lipton 2023, below eq. 4.8: eq. 4.3
+  // and 4.5 with the wall's
   //    segment S_w as the partner, its velocity, e = its normal), friction bounded by mu N_w.
   //    Each wall's term dissipates on its own, so the sum does too.
   if (params.damping == ContactDamping::None && params.friction == ContactFriction::None)

@@ -1,5 +1,5 @@
-// Benchmark (issue 12 "Performance"): jam N polydisperse disks (radius
-// 0.4-1.1, mean 0.8, sd 0.09, the grain-shape seed's §7.3 bed) in a container
+// Benchmark: jam N polydisperse disks (radius
+// 0.4-1.1, mean 0.8, sd 0.09, Bhattacharya & Lipton's (2023) §7.3 bed) in a container
 // of width sqrt(N) mean diameters (a square-ish bed), one core. Prints N, the
 // median wall and CPU time of `repeats` runs, iterations, packing fraction, rattlers.
 // Not a unit test; build by hand from the repo root:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Measured stability threshold of the time step against PERIDEM's estimate (issue 10).
+"""Measured stability threshold of the time step against PERIDEM's estimate.
 
 For each case the script reads the time-step estimate that pair_style peridem/contact prints
 at setup ("recommended time step R (critical C: bonds B, contact K)"), then bisects the time

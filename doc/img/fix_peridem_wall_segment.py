@@ -101,7 +101,7 @@ ax.add_patch(Polygon(sxy, fill=False, hatch="///", color="tab:purple",
 ax.plot(*p, "ko")
 ax.text(p[0] + 0.05, p[1] + 0.07, r"$p$")
 ax.text(-0.85, 1.3, r"$F = F_{S_x} + F_{S_y} - F_{S_x\cap S_y}$", color="tab:blue")
-finish(ax, "corner: inclusion-exclusion (seed eq. 4.8)", (-0.9, 1.7), (-0.8, 1.5), "lower right")
+finish(ax, "corner: inclusion-exclusion (Bhattacharya & Lipton 2023, eq. 4.8)", (-0.9, 1.7), (-0.8, 1.5), "lower right")
 
 fig.tight_layout()
 out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fix_peridem_wall_segment.png")

@@ -1,20 +1,20 @@
 #!/usr/bin/env python3
-"""Coefficient of restitution vs the damping parameter eps_n (PeriDEM seed §4.1, Table 2).
+"""Coefficient of restitution vs the damping parameter eps_n (Jha et al. 2021, §4.1, Table 2).
 
 Runs in.restitution for eps_n = 1, 0.95, 0.9, 0.85, 0.8 (damping centroid, C = 100) twice:
-  (a) as seed eq. 27 is written: the centroid dashpot acts while two nodes of the disks are
+  (a) as Jha et al. 2021, eq. 27 is written: the centroid dashpot acts while two nodes of the disks are
       closer than R_c, i.e. from the moment the contact force starts;
   (b) with the dashpot switched on 0.6 % of R_c (0.8 micrometres) earlier (pair_coeff
-      centroid_range 1.006 R_c); the seed's code also switches it on before the contact
+      centroid_range 1.006 R_c); Jha et al.'s (2021) code also switches it on before the contact
       (centres closer than R_1 + R_2 + 1.01 R_c). 1.006 is a CALIBRATION: it was fitted to
-      the seed's Table 2, so agreement with that table validates nothing.
+      Jha et al.'s (2021) Table 2, so agreement with that table validates nothing.
 Writes restitution.dat (eps_n, seed C_R, ours (a), ours (b)) and restitution.png (if
 matplotlib is installed), and checks when --check is given (exit 1 on failure):
   independent bounds: C_R(1) within 1% of 1 (no damping: only the energy left as grain
   vibration is missing), C_R strictly decreasing with eps_n in both series, (b) <= (a)
   for every eps_n (the earlier dashpot acts over a longer time, so it dissipates more),
-  (a) never below the seed's minus --tol (the seed's dashpot also starts earlier);
-  calibration: (b) within --seed-tol of the seed's Table 2 (the table it was fitted to;
+  (a) never below Jha et al.'s (2021) minus --tol (Jha et al.'s (2021) dashpot also starts earlier);
+  calibration: (b) within --seed-tol of Jha et al.'s (2021) Table 2 (the table it was fitted to;
   this only guards the calibration against changes).
 
 usage: run_restitution.py [--lmp PATH] [--np N] [--potentials DIR] [--check] [--tol T]
@@ -69,7 +69,7 @@ for k, e in enumerate(EPS):
           flush=True)
 
 with open(os.path.join(a.out, "restitution.dat"), "w") as f:
-    f.write("# eps_n  C_R(seed Table 2)  C_R(PERIDEM, damping centroid C=100: (a) onset R_c, "
+    f.write("# eps_n  C_R(Jha et al. 2021, Table 2)  C_R(PERIDEM, damping centroid C=100: (a) onset R_c, "
             "(b) onset %g R_c)\n" % ONSET)
     for e, s, o, b in zip(EPS, SEED, ours, early):
         f.write("%-6g %8.3f %10.4f %10.4f\n" % (e, s, o, b))
@@ -82,7 +82,7 @@ import matplotlib.pyplot as plt
 rows = [list(map(float, l.split())) for l in open(sys.argv[1]) if l.strip() and l[0] != "#"]
 eps, seed, ours, early = zip(*rows)
 fig, ax = plt.subplots(figsize=(5, 4))
-ax.plot(eps, seed, "s--", label="PeriDEM seed, Table 2", markersize=9)
+ax.plot(eps, seed, "s--", label="Jha et al. 2021, Table 2", markersize=9)
 ax.plot(eps, ours, "o-", label="PERIDEM, dashpot on below R_c (eq. 27)")
 ax.plot(eps, early, "^-", label="PERIDEM, dashpot on below 1.006 R_c")
 ax.plot(eps, eps, ":", color="gray", label="C_R = eps_n")
@@ -117,14 +117,14 @@ if a.check:
                        "more" % (e, b, o))
     for e, o, s in zip(EPS, ours, SEED):
         if o < s - a.tol:
-            bad.append("(a) C_R(%g) = %g damps more than the seed's %g" % (e, o, s))
+            bad.append("(a) C_R(%g) = %g damps more than Jha et al.'s (2021) %g" % (e, o, s))
     for e, b, s in zip(EPS, early, SEED):
         if abs(b - s) > a.seed_tol:
-            bad.append("(b) C_R(%g) = %g differs from the seed's %g by more than %g (calibration "
+            bad.append("(b) C_R(%g) = %g differs from Jha et al.'s (2021) %g by more than %g (calibration "
                        "of centroid_range %g lost)" % (e, b, s, a.seed_tol, ONSET))
     if bad:
         print("PERIDEM-FAIL " + "; ".join(bad))
         sys.exit(1)
     print("PERIDEM-PASS restitution bounds (C_R(1) = 1, decreasing, (b) <= (a), (a) not below "
-          "the seed); calibration: the seed's Table 2 to %g with centroid_range %g R_c"
+          "the paper); calibration: Jha et al.'s (2021) Table 2 to %g with centroid_range %g R_c"
           % (a.seed_tol, ONSET))

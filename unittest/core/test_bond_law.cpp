@@ -1,6 +1,6 @@
 // Tests of the pure bond law (src/peridem_bond_law.h): conservative forces, c and s0 against
-// numerical integration of the strain energy density and of the fracture energy, [BL] Table 1,
-// volume-correction ramps, breakage and damage measures.
+// numerical integration of the strain energy density and of the fracture energy, Bhattacharya &
+// Lipton 2023, Table 1, volume-correction ramps, breakage and damage measures.
 #include "peridem_bond_law.h"
 
 #include <gtest/gtest.h>
@@ -62,7 +62,8 @@ double affine_bond_energy(const BondConstants &bc, Micromodulus m, double eps, c
   return bond_energy(bc.c, micromodulus_value(m, r, eps), stretch(norm(y), r), r, 1.0, 1.0);
 }
 
-// Strain energy density W = 1/2 int_{H_eps} e dV' by quadrature ([BL] eq. 3.1 energy form).
+// Strain energy density W = 1/2 int_{H_eps} e dV' by quadrature (Bhattacharya & Lipton 2023,
+// eq. 3.1 energy form).
 double strain_energy_density(int dim, const BondConstants &bc, Micromodulus m, double eps,
                              const double F[3][3])
 {
@@ -121,8 +122,9 @@ const char *name(Micromodulus m)
 
 } // namespace
 
-// [BL] Table 1 (2D, nu = 1/3) with sample numbers: steel-like M_1 of [BL] Table 2,
-// G_c = 135 J/m^2 ([BL] Sec. 6.4), eps = 0.133 mm.
+// Bhattacharya & Lipton 2023, Table 1 (2D, nu = 1/3) with sample numbers: steel-like M_1 of
+// Bhattacharya & Lipton 2023, Table 2, G_c = 135 J/m^2 (Bhattacharya & Lipton 2023, Sec. 6.4), eps
+// = 0.133 mm.
 TEST(BondLaw, Table1TwoDimensional)
 {
   const double E = 191e9, Gc = 135.0, eps = 0.133e-3, nu = 1.0 / 3.0;
@@ -345,7 +347,7 @@ TEST(BondLaw, DamageMeasures)
   EXPECT_DOUBLE_EQ(bond_fraction_damage(3, 12), 0.25);
   EXPECT_DOUBLE_EQ(bond_fraction_damage(0, 0), 0.0);
   EXPECT_DOUBLE_EQ(bond_fraction_damage(7, 7), 1.0);
-  // [JDBL] eq. 14: |u_j - u_i| / |xi| / s0.
+  // Jha et al. 2021, eq. 14: |u_j - u_i| / |xi| / s0.
   EXPECT_NEAR(z_bond_term(0.002, 0.1, 0.01), 2.0, 1e-14);
   // Z >= |s|/s0 always (triangle inequality), with equality for a pure stretch.
   std::mt19937 gen(7);
@@ -359,7 +361,7 @@ TEST(BondLaw, DamageMeasures)
   EXPECT_NEAR(z_bond_term(0.05 * 2.0, 2.0, 0.01), 5.0, 1e-13);
 }
 
-// [JDBL] eq. (10) for material M1 (K = 5G/3, so the bracket vanishes).
+// Jha et al. 2021, eq. (10) for material M1 (K = 5G/3, so the bracket vanishes).
 TEST(BondLaw, LpsCriticalStretch)
 {
   const double K = 0.0216e9, G = 0.01296e9, Gc = 50.0, eps = 0.6e-3;

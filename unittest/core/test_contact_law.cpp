@@ -110,13 +110,13 @@ TEST(ContactLaw, StiffnessForm2dPerUnitThickness)
 
 TEST(ContactLaw, StiffnessFormula)
 {
-  // K_n = 18 k/(pi eps^5) ([BL] eq. 4.1, [JDBL] eq. 36)
+  // K_n = 18 k/(pi eps^5) (Bhattacharya & Lipton 2023, eq. 4.1, Jha et al. 2021, eq. 36)
   const KnForm p5 = KnForm::Eps5, p4 = KnForm::Eps4;
   EXPECT_DOUBLE_EQ(contact_stiffness(2.0, 1.0, p5), 36.0 / M_PI);
   EXPECT_NEAR(contact_stiffness(2.0, 1.0, p5), 11.459155902616464, 1e-12);
   const double k = 1.6e11, eps = 6.0e-4; // a steel-like grain, horizon 0.6 mm
   EXPECT_NEAR(contact_stiffness(k, eps, p5) / (18.0 * k / (M_PI * std::pow(eps, 5))), 1.0, 1e-14);
-  // unlike materials: harmonic mean of the bulk moduli ([JDBL] eq. 25)
+  // unlike materials: harmonic mean of the bulk moduli (Jha et al. 2021, eq. 25)
   EXPECT_DOUBLE_EQ(harmonic_mean(1.0, 3.0), 1.5);
   EXPECT_DOUBLE_EQ(contact_stiffness(1.0, 3.0, 0.5, p5), contact_stiffness(1.5, 0.5, p5));
   EXPECT_NEAR(contact_stiffness_mixed(1.0, 0.5, 3.0, 0.5, p5), contact_stiffness(1.5, 0.5, p5),
@@ -172,7 +172,8 @@ TEST(ContactLaw, RepulsionValues)
 
 TEST(ContactLaw, SelfContactUsesReferenceDistance)
 {
-  // [BL] Sec. 4.4: |xi| < R_c: no force until r < |xi|, stiffness K_n R_c/|xi|.
+  // Bhattacharya & Lipton 2023, Sec. 4.4: |xi| < R_c: no force until r < |xi|, stiffness K_n
+  // R_c/|xi|.
   const ContactParams p = base_params();
   ContactInput in;
   in.vol_i = in.vol_j = 1e-3;
@@ -243,7 +244,7 @@ TEST(ContactLaw, FrictionOpposesSlidingExample)
   in.mass_i = in.mass_j = 1.0;
   ContactResult r = contact_force(in, p);
   const double fn = p.Kn * 0.02 * 1e-6;
-  EXPECT_NEAR(r.f_fric[0], -0.3 * fn, 1e-15); // |F_f| = mu |F_r|, [JDBL] eq. 20
+  EXPECT_NEAR(r.f_fric[0], -0.3 * fn, 1e-15); // |F_f| = mu |F_r|, Jha et al. 2021, eq. 20
   EXPECT_NEAR(r.f_rep[1], fn, 1e-15);         // pushed up, away from the partner
   p.friction = ContactFriction::Regularized;
   in.dt = 1.0; // large dt: v_thr = mu |F_r| dt/m_red = 1.2e-5 < |vt|, slip
@@ -357,7 +358,7 @@ double measure_restitution(const ContactParams &p, double vol, double m1, double
 
 TEST(ContactLaw, RestitutionFormula)
 {
-  // [JDBL] eq. (23) is the linear spring-dashpot relation c = 2 zeta sqrt(k m) with
+  // Jha et al. 2021, eq. (23) is the linear spring-dashpot relation c = 2 zeta sqrt(k m) with
   // k = kappa_eff R_c and m = m_eq.  For an isolated node pair (spring K_n V^2, reduced mass
   // m_eq/2) it is exact with C = restitution_exact_C; choosing kappa_eff R_c = K_n V^2/2 makes
   // that C equal to 1.
@@ -373,7 +374,7 @@ TEST(ContactLaw, RestitutionFormula)
     p.damp_approach_only = false;
     const double cor_full = measure_restitution(p, vol, m1, m2, 1e-3);
     EXPECT_NEAR(cor_full, eps, 1e-3) << "eps_n " << eps;
-    p.damp_approach_only = true; // the seeds' rule (eq. 22): only while approaching
+    p.damp_approach_only = true; // the papers' rule (eq. 22): only while approaching
     const double cor_half = measure_restitution(p, vol, m1, m2, 1e-3);
     const double closed = restitution_from_damping_ratio(damping_ratio_from_restitution(eps), true);
     EXPECT_NEAR(cor_half, closed, 1e-3) << "eps_n " << eps;
@@ -389,8 +390,8 @@ TEST(ContactLaw, RestitutionFormula)
 
 TEST(ContactLaw, NodalDampingRatio)
 {
-  // [BL] eq. (4.5): r_d is the damping ratio of the pair (reduced mass); damped both ways the
-  // restitution is exp(-pi r_d/sqrt(1 - r_d^2)).
+  // Bhattacharya & Lipton 2023, eq. (4.5): r_d is the damping ratio of the pair (reduced mass);
+  // damped both ways the restitution is exp(-pi r_d/sqrt(1 - r_d^2)).
   ContactParams p = base_params();
   p.damping = ContactDamping::Nodal;
   p.damp_approach_only = false;
@@ -403,7 +404,7 @@ TEST(ContactLaw, NodalDampingRatio)
 
 TEST(ContactLaw, CentroidDamping)
 {
-  // [JDBL] eq. (26)-(27): beta_bar delta_dot_c e_c on grain p while approaching.
+  // Jha et al. 2021, eq. (26)-(27): beta_bar delta_dot_c e_c on grain p while approaching.
   const double sep[3] = {0.0, 2.0, 0.0};
   double v[3] = {0.0, 0.3, 0.0}, f[3], g[3];
   const double beta =

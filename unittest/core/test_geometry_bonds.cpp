@@ -65,7 +65,7 @@ TEST(GeometryBonds, CellListEqualsBruteForce)
 
 TEST(GeometryBonds, CutsRemoveBondsAcrossNotch)
 {
-  // Seed §6.4: unit square with a notch from the left edge to the centre.
+  // Bhattacharya & Lipton 2023, §6.4: unit square with a notch from the left edge to the centre.
   const Polygon sq = makeShape("square", {{"side", 1.0}});
   const double h = 0.05;
   LatticeOptions lo;
@@ -115,7 +115,7 @@ TEST(GeometryBonds, Shapes3D)
   const Nodes3D b = latticeNodes3D(Shape3D::box(1, 1, 1), 0.25);
   EXPECT_EQ(b.size(), 125u); // -0.5 .. 0.5 in steps of 0.25
 
-  // Extruded plus: bonds across the gap between arms are pruned; seed §5 on
+  // Extruded plus: bonds across the gap between arms are pruned; Bhattacharya & Lipton 2023, §5 on
   // the projection agrees with the exact prism test; cell list vs brute.
   const double h = 0.1;
   const Nodes3D n = latticeNodes3D(plus, h);

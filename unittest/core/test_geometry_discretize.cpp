@@ -1,5 +1,5 @@
 // Discretization: lattice nodes and volumes (h^2 or exactly clipped cells),
-// Gmsh import with P1/Q1 nodal volumes (PeriDEM seed §3.1 eq. 31).
+// Gmsh import with P1/Q1 nodal volumes (Jha et al. 2021, §3.1 eq. 31).
 #include "peridem_geometry_discretize.h"
 #include "peridem_geometry_shapes.h"
 

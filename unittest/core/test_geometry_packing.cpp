@@ -1,6 +1,6 @@
-// Jammed disk/sphere packings (grain-shape seed §7-7.1, issue 12): exact
+// Jammed disk/sphere packings (Bhattacharya & Lipton 2023, §7-7.1): exact
 // no-overlap and no-wall-crossing checks, the local jamming criterion of the
-// seed's Definition 7.1, packing fractions against known values, radius
+// Bhattacharya & Lipton's (2023) Definition 7.1, packing fractions against known values, radius
 // distributions and input errors.
 #include "peridem_geometry_packing.h"
 
@@ -204,8 +204,9 @@ TEST(GeometryPacking, SpheresNeverOverlapAndAreDense)
 
 TEST(GeometryPacking, PaperBedsReachThePaperFraction)
 {
-  // grain-shape seed §7.3: 1490 disks of radius 0.4-1.1 mm (mean 0.8, sd 0.09)
-  // in a 50 mm wide container (100 mm high); the seed's mesh method reaches 0.80
+  // Bhattacharya & Lipton 2023, §7.3: 1490 disks of radius 0.4-1.1 mm (mean 0.8, sd 0.09)
+  // in a 50 mm wide container (100 mm high); Bhattacharya & Lipton's (2023) mesh method reaches
+  // 0.80
   const Packing p = pack2d(1490, 50.0, 100.0, 12);
   EXPECT_GE(p.fraction, 0.80);
   EXPECT_LE(p.hi[1], 100.0);

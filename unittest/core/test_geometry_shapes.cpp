@@ -1,5 +1,5 @@
-// Built-in shapes (areas vs analytic values, seed §7.2 parameters) and the
-// polygon file reader (format doc/peridem_polygon_format.md).
+// Built-in shapes (areas vs analytic values, Bhattacharya & Lipton 2023, §7.2 parameters) and the
+// polygon file reader (format doc/peridem_polygon_format.rst).
 #include "peridem_geometry_shapes.h"
 
 #include "geometry_test_helpers.h"
@@ -53,7 +53,7 @@ TEST(GeometryShapes, AnalyticAreas)
 
 TEST(GeometryShapes, PerturbedDiskFollowsSeed)
 {
-  // Seed §7.2: r_i = R (1 - X_i), X_i in [0, 1 - phi]: radii in [phi R, R].
+  // Bhattacharya & Lipton 2023, §7.2: r_i = R (1 - X_i), X_i in [0, 1 - phi]: radii in [phi R, R].
   const Polygon a = makePerturbedDisk(2.0, 20, 0.6, 7), b = makePerturbedDisk(2.0, 20, 0.6, 7);
   const Polygon c = makePerturbedDisk(2.0, 20, 0.6, 8);
   ASSERT_EQ(a.outer().size(), 20u);

@@ -1,6 +1,6 @@
-// Bond visibility: the seed §5 pruning (extended boundary + cusp bisectors)
-// must keep exactly the bonds whose segment stays in the grain, as decided by
-// the exact reference test, on every built-in shape and resolution.
+// Bond visibility: the pruning of Bhattacharya & Lipton 2023, §5 (extended boundary + cusp
+// bisectors) must keep exactly the bonds whose segment stays in the grain, as decided by the exact
+// reference test, on every built-in shape and resolution.
 #include "peridem_geometry_bonds.h"
 #include "peridem_geometry_discretize.h"
 #include "peridem_geometry_shapes.h"

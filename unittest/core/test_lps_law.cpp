@@ -16,8 +16,8 @@ namespace {
 
 using Strain = std::array<std::array<double, 3>, 3>;
 
-// W of [JDBL] eq. 8 for the affine small strain eps (e = r n.eps.n), by quadrature over the
-// ball (d = 3) or disk (d = 2) of radius 1 (the horizon), linearised in eps
+// W of Jha et al. 2021, eq. 8 for the affine small strain eps (e = r n.eps.n), by quadrature over
+// the ball (d = 3) or disk (d = 2) of radius 1 (the horizon), linearised in eps
 double lps_energy_density(const LpsConstants &c, int dim, Influence w, const Strain &eps)
 {
   const int nr = 200, nphi = 16, nt = dim == 3 ? 128 : 1;
@@ -133,7 +133,7 @@ TEST(LpsLaw, BadConstantsAreRefused)
 TEST(LpsLaw, BondEnergySumsToTheNodeEnergy)
 {
   // one node with three bonds (the partners' own terms set to zero by inv_m_j = 0):
-  // sum of the bond shares = V_i W_i of [JDBL] eq. 8
+  // sum of the bond shares = V_i W_i of Jha et al. 2021, eq. 8
   const LpsConstants c = lps_constants(3, LpsPlane::PlaneStrain, 3.0, 1.0);
   const double Vi = 0.7, r0[3] = {1.0, 1.5, 2.0}, e[3] = {0.01, -0.02, 0.005},
                Vj[3] = {0.5, 0.8, 1.1};

@@ -58,7 +58,7 @@ std::string elastic_error(double E, double nu, double K, double G)
 
 } // namespace
 
-// Shipped material M1 of [JDBL] Sec. 4.1 Table 1.
+// Shipped material M1 of Jha et al. 2021, Sec. 4.1 Table 1.
 TEST(Material, ReadsShippedM1)
 {
   const auto mf = read_material_file(potential("peridem_M1.peridem"));
@@ -74,7 +74,8 @@ TEST(Material, ReadsShippedM1)
   EXPECT_DOUBLE_EQ(m.horizon, 0.6e-3);
   EXPECT_EQ(m.micromodulus, Micromodulus::Conic);
   EXPECT_CONTAINS(m.origin, "peridem_M1.peridem:14");
-  // Bond constants: 2D from E (plane stress, [BL] Table 1 conic), 3D from K (90K/(pi eps^4)).
+  // Bond constants: 2D from E (plane stress, Bhattacharya & Lipton 2023, Table 1 conic), 3D from K
+  // (90K/(pi eps^4)).
   const double eps = 0.6e-3;
   const auto b2 = material_bond_constants(m, 2);
   EXPECT_NEAR(b2.c / (36 * 0.0324e9 / (kPi * std::pow(eps, 3))), 1.0, 1e-12);
@@ -274,7 +275,7 @@ TEST(Material, BadFilesGiveClearErrors)
   for (const Case &c : cases) EXPECT_CONTAINS(read_error(c.file, c.text), c.expect) << c.file;
   EXPECT_EQ(read_error("fine.peridem", u + ok + "\n"), "");
   EXPECT_CONTAINS(read_error("zero_bytes.peridem", ""), "zero_bytes.peridem: no material defined");
-  // a NUL byte is named, and the message goes on after it (issue 9)
+  // a NUL byte is named, and the message goes on after it
   const std::string nul = u + "material X density=1" + std::string(1, '\0') + " E=1 Gc=1\n";
   const std::string msg = read_error("nul.peridem", nul);
   EXPECT_CONTAINS(msg,
@@ -288,14 +289,15 @@ TEST(Material, BadFilesGiveClearErrors)
   }
 }
 
-// Files named after their paper and table (issue 10): the grain-shape paper's Table 2 and the
+// Files named after their paper and table: the grain-shape paper's Table 2 and the
 // PeriDEM paper's Table 1, each with its M1 and M2; the old one-material files agree.
 TEST(Material, ReadsPaperTableFiles)
 {
   const auto gs = read_material_file(potential("grain_shape_2023_table2.peridem"));
   ASSERT_EQ(gs.materials.size(), 2u);
   const Material &m1 = gs.get("M1"), &m2 = gs.get("M2");
-  // [BL] Table 2: M1 E 191 GPa, k 159.2 GPa, rho 8000; M2 E 1.23 GPa, k 2 GPa, rho 1200
+  // Bhattacharya & Lipton 2023, Table 2: M1 E 191 GPa, k 159.2 GPa, rho 8000; M2 E 1.23 GPa, k 2
+  // GPa, rho 1200
   EXPECT_DOUBLE_EQ(m1.elastic.E, 191e9);
   EXPECT_DOUBLE_EQ(m1.elastic.K, 159.2e9);
   EXPECT_DOUBLE_EQ(m1.density, 8000.0);
@@ -304,7 +306,7 @@ TEST(Material, ReadsPaperTableFiles)
   EXPECT_DOUBLE_EQ(m2.elastic.K, 2e9);
   EXPECT_DOUBLE_EQ(m2.density, 1200.0);
   EXPECT_NEAR(m2.elastic.nu, (6.0 - 1.23) / 12.0, 1e-12); // implied, 0.3975
-  EXPECT_DOUBLE_EQ(m2.horizon, 0.5e-3);                   // [BL] Sec. 7.3
+  EXPECT_DOUBLE_EQ(m2.horizon, 0.5e-3);                   // Bhattacharya & Lipton 2023, Sec. 7.3
   const auto pd = read_material_file(potential("peridem_2021_table1.peridem"));
   const auto old1 = read_material_file(potential("peridem_M1.peridem"));
   const auto old2 = read_material_file(potential("pmma_M2.peridem"));

@@ -1,5 +1,6 @@
 // Tests of the analytic wall regions and wall forces (src/peridem_wall_geometry.h) against
-// independent adaptive quadrature of chord lengths, the seed's printed formulas and limits.
+// independent adaptive quadrature of chord lengths, Bhattacharya & Lipton's (2023) printed formulas
+// and limits.
 #include "peridem_wall_geometry.h"
 
 #include <gtest/gtest.h>
@@ -164,7 +165,7 @@ TEST(WallGeometry2D, SegmentMatchesQuadratureAndSeed)
     const WallRegion s = disk_segment(R, d);
     const WallRegion ref = ref_quadrant(R, d, -R);
     expect_region_near(s, ref, R * R, R * R * R, 1e-10, "segment");
-    // seed [BL] Sec. 4.5: |S| = pi R^2/2 - R^2 asin(d/R) - sqrt(R^2 - d^2) d,
+    // Bhattacharya & Lipton 2023, Sec. 4.5: |S| = pi R^2/2 - R^2 asin(d/R) - sqrt(R^2 - d^2) d,
     //                     |c - p| = 2/3 (R^2 - d^2)^{3/2}/|S|
     const double seed_area =
         0.5 * M_PI * R * R - R * R * std::asin(d / R) - std::sqrt(R * R - d * d) * d;
@@ -203,7 +204,8 @@ TEST(WallGeometry2D, CornerMatchesQuadratureAndSeed)
       EXPECT_NEAR(qs.area, q.area, 1e-14);
       EXPECT_NEAR(qs.moment[0], q.moment[1], 1e-14);
       if (a >= 0.0 && b >= 0.0 && a * a + b * b < R * R) {
-        // the seed's printed expressions with d_li = b (wall l_i: y = b), d_lj = a
+        // Bhattacharya & Lipton's (2023) printed expressions with d_li = b (wall l_i: y = b), d_lj
+        // = a
         const double di = b, dj = a;
         const double area = -0.5 * R * R * std::asin(di / R) +
                             0.5 * R * R * std::asin(std::sqrt(R * R - dj * dj) / R) + di * dj -
@@ -213,8 +215,8 @@ TEST(WallGeometry2D, CornerMatchesQuadratureAndSeed)
                           std::pow(R * R - di * di, 1.5) / 3.0;
         const double Iy = -0.5 * R * R * di + di * di * di / 6.0 + 0.5 * di * dj * dj +
                           std::pow(R * R - dj * dj, 1.5) / 3.0;
-        // With these roles the seed's area expression matches; its I_x is the moment along
-        // x (normal of the wall at distance d_lj) and I_y along y.
+        // With these roles Bhattacharya & Lipton's (2023) area expression matches; its I_x is the
+        // moment along x (normal of the wall at distance d_lj) and I_y along y.
         EXPECT_NEAR(q.area, area, 1e-13) << a << " " << b;
         EXPECT_NEAR(q.moment[0], Iy, 1e-13) << a << " " << b;
         EXPECT_NEAR(q.moment[1], Ix, 1e-13) << a << " " << b;
@@ -318,7 +320,7 @@ TEST(WallGeometry2D, SingleWallForceIsMinusGradientOfPotential)
     for (double t : {-0.5, 0.0, 0.3, 0.8, 0.97}) {
       const double d = t * R, h = 1e-5 * R;
       const WallRegion s = dim == 2 ? disk_segment(R, d) : ball_cap(R, d);
-      // force along the outward normal: -K_n V (R|S| - M), [BL] eq. (4.7)
+      // force along the outward normal: -K_n V (R|S| - M), Bhattacharya & Lipton 2023, eq. (4.7)
       const double fn = -Kn * V * (R * s.area - s.moment[0]);
       // moving outward by h decreases d: F_n = -dU/dp_n = dU/dd
       const double fd =
@@ -328,7 +330,7 @@ TEST(WallGeometry2D, SingleWallForceIsMinusGradientOfPotential)
 }
 
 // The single-wall potential against a quadrature of its definition (away from the edge),
-// and near d = R against the leading terms of its expansion (issue 9: the closed form gave
+// and near d = R against the leading terms of its expansion (the closed form gave
 // -5e-10 per node there); it is continuous where the 2D evaluation switches to the series.
 TEST(WallGeometry2D, SingleWallPotentialAccurateUpToTheEdge)
 {

@@ -2,7 +2,7 @@
 
 #include "input.h"
 #include "lammps.h"
-#include "register_peridem.h"
+#include "register_driver.h"
 
 #include <cstdlib>
 #include <filesystem>

@@ -8,7 +8,7 @@
 #include "atom_vec.h"
 #include "force.h"
 #include "lammps.h"
-#include "register_peridem.h"
+#include "register_driver.h"
 #include "version.h"
 
 #include <cmath>

@@ -132,7 +132,7 @@ INSTANTIATE_TEST_SUITE_P(
 // ---------------------------------------------------------------------------
 // A 2D bar stretched uniformly (uniaxial stress, nu = 1/3 of bond-based 2D
 // peridynamics): the strain energy density of an interior node is E e^2 / 2.
-// The lattice sum approximates the seed's integral; its error shrinks as the
+// The lattice sum approximates Bhattacharya & Lipton's (2023) integral; its error shrinks as the
 // horizon spans more nodes.
 // ---------------------------------------------------------------------------
 

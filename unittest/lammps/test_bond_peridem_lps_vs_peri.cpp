@@ -74,7 +74,7 @@ TEST_F(BondPeridemLPSVsPeriLPS, ForcesAndEnergyOfADeformedBlockAgree)
   // Energy density: peri/lps tallies K theta^2/2 per node and, per ordered
   // pair, ev_tally(i, i, ..., 0.5 * evdwl) with newton off, i.e. half of
   // 15G/(2m) omega (e^d)^2 V_j: its deviatoric energy is half of W's
-  // ([JDBL] eq. 8; ours is checked against the forces by finite
+  // (Jha et al. 2021, eq. 8; ours is checked against the forces by finite
   // differences in test_bond_peridem_lps). With the volumetric part from
   // our dilations, ours = vol + 2 (stock - vol).
   const double pe_stock = lammps_get_thermo(stock, "pe");

@@ -1,4 +1,4 @@
-// create_peridem_grains and cut_peridem_bonds (issue 4): node counts and
+// create_peridem_grains and cut_peridem_bonds: node counts and
 // volumes, the same bonds as the core geometry library, no bond across a
 // notch or crack, grain IDs, 3D and Gmsh grains. Ranks: 1 here; 1 vs 2 ranks
 // is checked by the example tests (unittest/lammps/inputs/grains.cmake).

@@ -1,4 +1,4 @@
-// fix peridem/wall: the issue-6 validation through LAMMPS (drop and rebound, damping,
+// fix peridem/wall: validation through LAMMPS (drop and rebound, damping,
 // corner continuity, settled reaction, servo, moving walls, restart, lost nodes).
 // The formulas themselves are tested in unittest/core/test_wall_geometry.cpp.
 
@@ -31,7 +31,7 @@ constexpr double RC = 0.95 * H;
 // less than 1% of the impact energy goes into elastic vibration of the grain (see DropM1).
 constexpr double KN_SOFT = 2.5e22;
 
-// A 2D disk grain (radius 1 mm, material M1 of the seeds, spacing 0.15 mm, 137 nodes) in
+// A 2D disk grain (radius 1 mm, material M1 of Jha et al. 2021, spacing 0.15 mm, 137 nodes) in
 // a 6 mm x 9 mm box; walls are added by the tests.
 std::string grain(double xc, double yc)
 {
@@ -332,10 +332,11 @@ TEST_F(FixPeridemWallTest, ShearDragsGrain)
   EXPECT_LT(wall_entry(2, 3), 0.0); // the grain holds the floor back
 }
 
-// The friction of a sheared floor on a sliding block is mu N (issue 9): a
+// The friction of a sheared floor on a sliding block is mu N: a
 // square block rests on a floor that slides at 0.5 m/s; while the whole
 // contact slips, the tangential wall force is mu times the normal load
-// (seed eq. 4.3, no damping), for two values of mu, and drags the block along.
+// (Bhattacharya & Lipton 2023, eq. 4.3, no damping), for two values of mu, and drags the block
+// along.
 TEST_F(FixPeridemWallTest, ShearFrictionIsMuTimesLoad)
 {
   for (double mu : {0.5, 0.2}) {

@@ -1,4 +1,4 @@
-// pair_style peridem/contact through LAMMPS (issue 9, item 6): forces are
+// pair_style peridem/contact through LAMMPS: forces are
 // minus the gradient of the energy (central finite differences), newton_pair
 // off gives the forces of newton_pair on, and two MPI ranks give the forces
 // of one after run 0 (run this binary under mpirun -np 2 for that check).
@@ -12,7 +12,7 @@
 #include "input.h"
 #include "lammps.h"
 #include "pair.h"
-#include "register_peridem.h"
+#include "register_driver.h"
 
 #include <algorithm>
 #include <cmath>

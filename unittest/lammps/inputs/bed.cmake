@@ -1,4 +1,4 @@
-# create_peridem_bed (issue 12)
+# create_peridem_bed
 
 # the packed-bed example: the same bed and grains on 1 and 2 ranks
 peridem_add_example_test(packed_bed packed-bed in.bed 1 2)

@@ -1,5 +1,5 @@
 # fix peridem/bonds forces a neighbour-list rebuild at the step after a bond
-# breaks, in every run (issue 9, item 1): a grain struck hard enough to break
+# breaks, in every run: a grain struck hard enough to break
 # bonds ends with the same energy and bonds with LAMMPS's default neighbour
 # settings, with a rebuild at every step, and split into two runs.
 # Before the fix: +10.7% energy, 76 bonds too many broken (2d); 7e-7 in 3d.
@@ -23,8 +23,8 @@ foreach(_np 1 2)
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
 
-# write_data + read_data keep the broken count and Z per node (issue 9,
-# item 3; before: 0 of 220 broken bonds read back), on 1 and 2 ranks
+# write_data + read_data keep the broken count and Z per node (before
+# the fix: 0 of 220 broken bonds read back), on 1 and 2 ranks
 foreach(_np 1 2)
   add_test(NAME data_file_keeps_damage_np${_np}
     COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np}
@@ -33,7 +33,7 @@ foreach(_np 1 2)
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
 
-# nodes leaving the box (issue 9, item 4): a strip thrown out of an open
+# nodes leaving the box: a strip thrown out of an open
 # container is deleted with its bonds and counted with 'lost delete' (1 and
 # 2 ranks); without it the run stops naming the node and its grain (before:
 # LAMMPS's "Lost atoms" / "Bond atoms missing")

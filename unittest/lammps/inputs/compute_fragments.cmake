@@ -1,4 +1,4 @@
-# compute peridem/fragments, peridem/grain, peridem/bed (issue 13)
+# compute peridem/fragments, peridem/grain, peridem/bed
 
 # cut pieces across subdomain boundaries: the gtest program on 2, 3 and 4 ranks
 foreach(_np 2 3 4)

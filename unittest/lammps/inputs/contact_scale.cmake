@@ -1,4 +1,4 @@
-# contact at the papers' scale (issue 10): the K_n form of the dimension,
+# contact at the papers' scale: the K_n form of the dimension,
 # start-up checks, the grain-shape paper's bed at its time step
 
 # Kn_form: bad values and a form that makes no sense for the dimension

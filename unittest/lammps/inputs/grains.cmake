@@ -1,4 +1,4 @@
-# create_peridem_grains / cut_peridem_bonds (issue 4)
+# create_peridem_grains / cut_peridem_bonds
 
 # examples: the same nodes, volumes, grain IDs and bonds on 1 and 2 ranks
 peridem_add_example_test(grains_convex grains-convex in.grains_convex 1 2)

@@ -9,13 +9,13 @@ add_test(NAME contact_collision_energy
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/examples/contact-collision)
 
 # the quick-start job, shortened to 18000 steps (the grains land from step
-# ~15000): the same thermo output on 1 and 2 ranks (issue 9: it ran on one
+# ~15000): the same thermo output on 1 and 2 ranks (it ran on one
 # rank only and could fail only by crashing)
 peridem_add_example_test(pile pile in.pile 1 2)
 set_tests_properties(example.pile PROPERTIES ENVIRONMENT "PERIDEM_EXAMPLE_ARGS=-var steps 18000")
 
 # pair_style peridem/contact forces on 2 ranks equal those of 1 rank after
-# run 0, with newton_pair on and off (issue 9, item 6)
+# run 0, with newton_pair on and off
 add_test(NAME PairContact.ranks_match_one_rank_np2
   COMMAND ${PERIDEM_RUN}/mpirun.sh 2 $<TARGET_FILE:test_pair_peridem_contact>
           --gtest_filter=*RanksMatchOneRank*)

@@ -1,11 +1,11 @@
-# pair_style peridem/contact (issue 5): friction, self-contact, bonded pairs
+# pair_style peridem/contact: friction, self-contact, bonded pairs
 
 set(_fric ${PROJECT_SOURCE_DIR}/examples/contact-friction)
 set(_self ${PROJECT_SOURCE_DIR}/examples/contact-self)
 
 # (1a) a square grain on a fixed slab, gravity tilted to theta (ramped in):
 # stuck for tan(theta)/mu = 0.8, 0.95, sliding for 1.05, 1.25 (mu = 0.5),
-# with the regularized law (seed eq. 4.3) and plain Coulomb ([JDBL] eq. 19-20)
+# with the regularized law (Bhattacharya & Lipton 2023, eq. 4.3) and plain Coulomb (Jha et al. 2021, eq. 19-20)
 foreach(_law regularized coulomb)
   foreach(_case "0.8;21.8014;stick" "0.95;25.4077;stick" "1.05;27.6995;slide" "1.25;32.0054;slide")
     list(GET _case 0 _ratio)

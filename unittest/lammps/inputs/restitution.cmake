@@ -1,15 +1,15 @@
-# damping centroid (pair_style peridem/contact, PeriDEM seed §2.3.2) and the
-# coefficient-of-restitution study of the seed's §4.1 (Table 2)
+# damping centroid (pair_style peridem/contact, Jha et al. 2021, §2.3.2) and the
+# coefficient-of-restitution study of Jha et al.'s (2021) §4.1 (Table 2)
 
 # the two-disk bounce with centroid damping: same thermo output on 1 and 2
 # ranks (both disks straddle the rank boundary at x = 0)
 peridem_add_example_test(restitution restitution in.restitution 1 2)
 
-# the restitution study at the seed's resolution (h = 0.1423 mm, 9 runs of
+# the restitution study at Jha et al.'s (2021) resolution (h = 0.1423 mm, 9 runs of
 # about 2 s). Independent bounds: C_R(1) within 1% of 1, C_R decreasing
 # with eps_n, the earlier dashpot (centroid_range 1.006 R_c) below eq. 27 as
-# written, which is not below the seed's. Calibration (not a validation:
-# 1.006 was fitted to it): the seed's Table 2 to 0.005 with 1.006 R_c.
+# written, which is not below Jha et al.'s (2021). Calibration (not a validation:
+# 1.006 was fitted to it): Jha et al.'s (2021) Table 2 to 0.005 with 1.006 R_c.
 add_test(NAME restitution_trend
   COMMAND ${PERIDEM_RUN}/expect_pass.sh python3 ${PROJECT_SOURCE_DIR}/examples/restitution/run_restitution.py
           --lmp $<TARGET_FILE:lmp_peridem> --potentials ${PROJECT_SOURCE_DIR}/potentials

@@ -1,4 +1,4 @@
-# fix peridem/wall (issue 6) and the shared contact keywords (lmp_peridem_contact)
+# fix peridem/wall and the shared contact keywords (lmp_peridem_contact)
 
 # example: 1 and 2 MPI ranks give the same thermo output
 peridem_add_example_test(wall_drop wall-drop in.wall_drop 1 2)
@@ -42,7 +42,7 @@ peridem_wall_error(bad_servo "ylo 0.0 yhi 2.0 servo yhi 1.0 -1 0.5 Kn 1 Rc 0.5"
   "servo gain must be > 0, not -1")
 peridem_wall_error(shear_normal "ylo 0.0 shear ylo 0.1 0.2 0 Kn 1 Rc 0.5"
   "shear velocity of wall ylo must lie in the wall")
-# walls on periodic dimensions are refused (issue 9), in 2d and 3d
+# walls on periodic dimensions are refused, in 2d and 3d
 peridem_wall_error(periodic_2d "xlo EDGE ylo 0.0 Kn 1 Rc 0.5"
   "fix peridem/wall: wall xlo is on a periodic dimension \\(x\\); use boundary f, s or m in x"
   -var bnd "p f p")

@@ -1,0 +1,23 @@
+# PERIDEM as a package of a LAMMPS source tree (PKG_PERIDEM=ON): LAMMPS's CMake compiles
+# src/PERIDEM/*.cpp into liblammps itself; this module adds what those files need.
+# scripts/build_lammps_2025.sh copies it to <lammps>/cmake/Modules/Packages/ and lists
+# PERIDEM among the packages of <lammps>/cmake/CMakeLists.txt (STANDARD_PACKAGES and the
+# PKG_WITH_INCL loop), as LAMMPS's "Adding a package" instructions describe.
+
+# The package is C++17 (LAMMPS itself requires C++17 since 2023; older trees build as C++11).
+if(CMAKE_CXX_STANDARD LESS 17)
+  message(FATAL_ERROR "The PERIDEM package needs C++17: configure LAMMPS with -D CMAKE_CXX_STANDARD=17")
+endif()
+
+# Eigen 3 (header only): the principal axes of a grain (a symmetric 3x3 eigenproblem,
+# src/PERIDEM/peridem_grain_shape.cpp). Debian: libeigen3-dev.
+find_package(Eigen3 3.3 NO_MODULE)
+if(NOT TARGET Eigen3::Eigen)
+  message(FATAL_ERROR "The PERIDEM package needs Eigen 3 (Debian: libeigen3-dev); set Eigen3_DIR "
+                      "to the folder of its Eigen3Config.cmake")
+endif()
+target_link_libraries(lammps PRIVATE Eigen3::Eigen)
+
+# The styles' own warnings, as the stand-alone build compiles them.
+file(GLOB PERIDEM_SOURCES ${LAMMPS_SOURCE_DIR}/PERIDEM/*.cpp)
+set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -Wextra -Wno-unused-parameter)

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Source hygiene of src/ that an upstream LAMMPS reviewer checks by grep:
+#  - no M_PI (LAMMPS glue: MathConst::MY_PI; core: peridem::kPi in peridem_math.h),
+#    no GCC builtins, no LAMMPS_VERSION_NUMBER (not a LAMMPS macro);
+#  - papers cited by author and year, not by project shorthand;
+#  - the LAMMPS-free core (src/peridem_*) includes no LAMMPS header.
+# Usage: check_source_hygiene.sh REPO_ROOT. Prints PERIDEM-PASS or the offending lines.
+set -uo pipefail
+root="${1:?usage: check_source_hygiene.sh REPO_ROOT}"
+cd "$root/src" || exit 1
+bad=0
+report() { # what, grep output
+  if [ -n "$2" ]; then
+    echo "$1:"
+    echo "$2"
+    bad=1
+  fi
+}
+report "M_PI (use MathConst::MY_PI or peridem::kPi)" "$(grep -nw 'M_PI' -- *.cpp *.h)"
+report "compiler builtins" "$(grep -n '__builtin_' -- *.cpp *.h)"
+report "LAMMPS_VERSION_NUMBER is not a LAMMPS macro" "$(grep -n 'LAMMPS_VERSION_NUMBER' -- *.cpp *.h)"
+report "project shorthand instead of an author-year citation" \
+  "$(grep -nE '\[BL\]|\[JDBL\]|\bseed (§|Sec\.|eq\.|Table)|\bseed'"'"'s\b|grain-shape seed|PeriDEM seed|\bissue [0-9]+|shared/seeds' -- *.cpp *.h)"
+for f in peridem_*.cpp peridem_*.h; do
+  for inc in $(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$f"); do
+    case "$inc" in
+    peridem_*) ;;
+    *) report "$f: the LAMMPS-free core includes \"$inc\"" "$f" ;;
+    esac
+  done
+done
+if [ $bad -eq 0 ]; then
+  echo "PERIDEM-PASS source hygiene of src/"
+  exit 0
+fi
+echo "PERIDEM-FAIL source hygiene of src/"
+exit 1
