@@ -143,3 +143,9 @@ endfunction()
 peridem_catalogue_warning(contact_Rc_above_horizon
   "pair_coeff: contact radius Rc = 0.003 is larger than the horizon 0.002"
   -var pre "pair_style peridem/contact" -var bad "pair_coeff * * Kn 1e23 Rc 3e-3 horizon 2e-3")
+
+# doc/errors.md lists every error call of src/ with its tests (which must exist)
+find_program(PERIDEM_CATALOGUE_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
+add_test(NAME error_catalogue
+  COMMAND ${PERIDEM_CATALOGUE_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check_error_catalogue.py
+          --build ${CMAKE_BINARY_DIR})
