@@ -121,7 +121,7 @@ peridem_catalogue_error(grains_negative_spacing "create_peridem_grains: spacing 
   -var bad "create_peridem_grains 1 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing -5e-4 horizon 1e-3")
 peridem_catalogue_error(grains_volume_mode "create_peridem_grains: unknown volume mode 'approx' \\(use cell or exact\\)"
   -var bad "create_peridem_grains 1 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 volume approx")
-peridem_catalogue_error(grains_positions_missing "create_peridem_grains: cannot open positions file /nonexistent/positions\\.txt"
+peridem_catalogue_error(grains_positions_missing "create_peridem_grains: cannot open positions file .?/nonexistent/positions\\.txt"
   -var bad "create_peridem_grains 1 sphere radius 1e-3 positions /nonexistent/positions.txt spacing 5e-4 horizon 1e-3")
 peridem_catalogue_error(grains_2d_shape_3d "create_peridem_grains: 2D shape disk in a 3D box needs extrude HEIGHT"
   -var bad "create_peridem_grains 1 disk at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 density 1000")
