@@ -9,7 +9,7 @@ lammps_src_root="${PERIDEM_LAMMPS_SRC_ROOT:-/opt/peridem/lammps-source}"
 
 packages=(build-essential cmake dpkg-dev lammps liblammps-dev lammps-examples
           libeigen3-dev libopenmpi-dev openmpi-bin libgtest-dev python3-lammps
-          python3-numpy)
+          python3-numpy libyaml-dev libgmock-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -392,7 +392,7 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
 
   auto positive = [&](int iarg, const char *what) {
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, what);
-    const double v = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double v = PERIDEM::number(lmp, COEFF, what, arg[iarg + 1]);
     if (!(v > 0.0))
       error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, style, arg[iarg + 1]);
     return v;

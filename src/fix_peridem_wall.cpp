@@ -24,6 +24,7 @@
 #include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "respa.h"
 #include "update.h"
 #include "variable.h"
 
@@ -106,13 +107,13 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
         wall.motion = Motion::Variable;
         var_any = 1;
       } else {
-        wall.pos = utils::numeric(FLERR, value, false, lmp);
+        wall.pos = PERIDEM::number(lmp, STYLE, "wall " + key, value);
       }
       iarg += 2;
     } else if (key == "velocity") {
       need(2, "velocity");
       const int w = parse_face(arg[iarg + 1]);
-      walls[w].vel = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      walls[w].vel = PERIDEM::number(lmp, STYLE, "velocity", arg[iarg + 2]);
       if (walls[w].motion != Motion::Fixed)
         error->all(FLERR, "{}: wall {} has a variable position or a servo and a velocity", STYLE,
                    FACES[w]);
@@ -126,9 +127,9 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
         error->all(FLERR, "{}: wall {} has a variable position or a velocity and a servo", STYLE,
                    FACES[w]);
       wall.motion = Motion::Servo;
-      wall.pressure = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
-      wall.gain = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
-      wall.vmax = utils::numeric(FLERR, arg[iarg + 4], false, lmp);
+      wall.pressure = PERIDEM::number(lmp, STYLE, "servo pressure", arg[iarg + 2]);
+      wall.gain = PERIDEM::number(lmp, STYLE, "servo gain", arg[iarg + 3]);
+      wall.vmax = PERIDEM::number(lmp, STYLE, "servo vmax", arg[iarg + 4]);
       if (!(wall.pressure >= 0.0))
         error->all(FLERR, "{}: servo pressure must be >= 0, not {}", STYLE, arg[iarg + 2]);
       if (!(wall.gain > 0.0))
@@ -141,7 +142,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       need(4, "shear");
       const int w = parse_face(arg[iarg + 1]);
       for (int k = 0; k < 3; k++)
-        walls[w].shear[k] = utils::numeric(FLERR, arg[iarg + 2 + k], false, lmp);
+        walls[w].shear[k] = PERIDEM::number(lmp, STYLE, "shear", arg[iarg + 2 + k]);
       if (walls[w].shear[w / 2] != 0.0)
         error->all(FLERR,
                    "{}: shear velocity of wall {} must lie in the wall (its {} component must be "
@@ -203,7 +204,8 @@ FixPeridemWall::~FixPeridemWall()
 
 int FixPeridemWall::setmask()
 {
-  return POST_INTEGRATE | POST_FORCE | POST_RUN | MIN_POST_FORCE | (lost_delete ? PRE_EXCHANGE : 0);
+  return POST_INTEGRATE | POST_FORCE | POST_FORCE_RESPA | POST_RUN | MIN_POST_FORCE |
+         (lost_delete ? PRE_EXCHANGE : 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -285,6 +287,10 @@ void FixPeridemWall::check_periodic() const
 void FixPeridemWall::init()
 {
   check_periodic();
+  // under run_style respa the walls act at the outermost level, with the contact pair style
+  // (as LAMMPS's fix wall styles); before, they silently did nothing under respa
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    ilevel_respa = static_cast<Respa *>(update->integrate)->nlevels - 1;
   if (contact_from_pair) take_contact_from_pair();
   for (int w = 0; w < nwalls; w++) {
     Wall &wall = walls[w];
@@ -303,8 +309,20 @@ void FixPeridemWall::setup(int vflag)
   if (!start_checked) check_start();
   lost_local = 0;
   in_setup = 1;
-  post_force(vflag);
+  if (utils::strmatch(update->integrate_style, "^respa")) {
+    auto respa = static_cast<Respa *>(update->integrate);
+    respa->copy_flevel_f(ilevel_respa);
+    post_force(vflag);
+    respa->copy_f_flevel(ilevel_respa);
+  } else {
+    post_force(vflag);
+  }
   in_setup = 0;
+}
+
+void FixPeridemWall::post_force_respa(int vflag, int ilevel, int /*iloop*/)
+{
+  if (ilevel == ilevel_respa) post_force(vflag);
 }
 
 /* ----------------------------------------------------------------------
@@ -506,7 +524,9 @@ void FixPeridemWall::post_force(int vflag)
     for (int w = 0; w < nwalls; w++)
       for (int k = 0; k < 3; k++) local[3 * w + k] += res.f_wall[w][k];
 
-    if (vflag_either) {
+    // not vflag_either: Fix::v_setup() of this LAMMPS (29 Sep 2021) leaves it unset, so the
+    // virial was tallied only on steps after a step without virial (and from garbage at setup)
+    if (vflag_global || vflag_atom) {
       // each wall acts as a partner on its plane: virial del (x) f, del from the plane to the
       // node along the wall's axis, f the force of that wall on the node (-reaction)
       double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};

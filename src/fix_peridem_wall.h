@@ -38,6 +38,7 @@ class FixPeridemWall : public Fix {
   void min_setup(int) override;
   void post_integrate() override;
   void post_force(int) override;
+  void post_force_respa(int, int, int) override;
   void min_post_force(int) override;
   void post_run() override;
   double compute_scalar() override;
@@ -78,6 +79,7 @@ class FixPeridemWall : public Fix {
   bigint deleted_total; // nodes deleted so far (lost delete), all ranks
   int servo_any, var_any;
   int in_setup;
+  int ilevel_respa = 0;       // run_style respa: the level of the wall forces (outermost)
   bool start_checked = false; // nodes within Rc of a wall at the first step reported
   void check_start();
 

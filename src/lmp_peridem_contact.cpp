@@ -13,6 +13,7 @@
 ------------------------------------------------------------------------- */
 
 #include "lmp_peridem_contact.h"
+#include "lmp_peridem_parse.h"
 
 #include "comm.h"
 #include "error.h"
@@ -36,7 +37,7 @@ ContactParser::ContactParser(LAMMPS *lmp_in, std::string command_in)
 double ContactParser::number(int narg, char **arg, int iarg, const char *what) const
 {
   if (iarg >= narg) lmp->error->all(FLERR, "{}: keyword {} needs a value", command, what);
-  return utils::numeric(FLERR, arg[iarg], false, lmp);
+  return PERIDEM::number(lmp, command, what, arg[iarg]);
 }
 
 double ContactParser::positive(int narg, char **arg, int iarg, const char *what) const

@@ -7,6 +7,9 @@
 #include "error.h"
 #include "lammps.h"
 
+#include <cmath>
+#include <cstdlib>
+
 using namespace LAMMPS_NS;
 
 namespace PERIDEM {
@@ -30,6 +33,19 @@ int yes_no(LAMMPS *lmp, const std::string &command, const std::string &keyword,
            const std::string &value)
 {
   return choice(lmp, command, keyword, value, {"yes", "no"}) == 0 ? 1 : 0;
+}
+
+double number(LAMMPS *lmp, const std::string &command, const std::string &keyword,
+              const char *value)
+{
+  const std::string text = value ? value : "";
+  char *end = nullptr;
+  const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0')
+    lmp->error->all(FLERR, "{}: {} must be a number, not '{}'", command, keyword, text);
+  if (!std::isfinite(v))
+    lmp->error->all(FLERR, "{}: {} must be a finite number, not {}", command, keyword, text);
+  return v;
 }
 
 } // namespace PERIDEM

@@ -23,6 +23,12 @@ int choice(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string
 int yes_no(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
            const std::string &value);
 
+// A number for <keyword> of <command>, finite: "nan", "inf" and words that are no number
+// end the run with "<command>: <keyword> must be a finite number, not nan" (LAMMPS's
+// utils::numeric() would name neither the command nor the keyword).
+double number(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
+              const char *value);
+
 } // namespace PERIDEM
 
 #endif

@@ -196,8 +196,11 @@ void PairPeridemContact::compute(int eflag, int vflag)
   if (!update->setupflag) dissipated += dissipated_now;
   // global virial as sum f . r of the node pairs (newton on); the centroid
   // dashpots below tally their own, from the unwrapped centres
+  // (virial_fdotr_compute() clears vflag_fdotr: decide the centroid tally first, or
+  // the centroid dashpots were left out of the virial with newton_pair on)
+  const bool centroid_virial = vflag_global || vflag_fdotr;
   if (vflag_fdotr) virial_fdotr_compute();
-  if (centroid_on) compute_centroid_damping();
+  if (centroid_on) compute_centroid_damping(centroid_virial);
   pvector[0] = dissipated;
 }
 
@@ -213,7 +216,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
    get the acceleration F/M_p) and its power is exactly F . (v_c - v_c').
 ------------------------------------------------------------------------- */
 
-void PairPeridemContact::compute_centroid_damping()
+void PairPeridemContact::compute_centroid_damping(bool tally_virial)
 {
   // the grain pairs in contact, from all ranks, sorted and unique (one entry
   // per grain pair, the smallest type pair), so that every rank and every
@@ -237,7 +240,7 @@ void PairPeridemContact::compute_centroid_damping()
   sum_grain_centres();
   const int ngrains = (int)grain_ids.size();
   grain_force.assign(3 * ngrains, 0.0);
-  const bool tally = (vflag_global || vflag_fdotr) && comm->me == 0;
+  const bool tally = tally_virial && comm->me == 0;
   double power = 0.0;
   for (const auto &t : touch_all) {
     const int a = grain_index(t[0]), b = grain_index(t[1]);

@@ -88,7 +88,7 @@ class PairPeridemContact : public Pair {
   int grain_index(tagint id) const; // -1 if unknown
   void build_grain_index();
   void sum_grain_centres();
-  void compute_centroid_damping();
+  void compute_centroid_damping(bool tally_virial);
 };
 
 } // namespace LAMMPS_NS
