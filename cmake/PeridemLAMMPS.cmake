@@ -84,6 +84,9 @@ add_library(peridemplugin MODULE ${PROJECT_SOURCE_DIR}/plugin/peridem_plugin.cpp
 target_link_libraries(peridemplugin PRIVATE peridem)
 target_compile_options(peridemplugin PRIVATE -Wall -Wextra -Wno-unused-parameter
   $<$<BOOL:${PERIDEM_WERROR}>:-Werror>)
+# never unloaded: LAMMPS 2025 unloads plugins (plugin_clear) before it deletes the atom,
+# force and modify styles they created, whose code would then be gone (a crash at exit)
+target_link_options(peridemplugin PRIVATE -Wl,-z,nodelete)
 set_target_properties(peridemplugin PROPERTIES PREFIX "" OUTPUT_NAME peridemplugin
   LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
 install(TARGETS peridemplugin LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/lammps/plugins)

@@ -28,10 +28,15 @@ stages=("$@")
 
 log() { echo "[$(date -u +%H:%M:%S)] $*"; }
 timed() { # name command...: runs the command with its output in $logs/name.log, times it
-  local name="$1" t0 rc=0
+  local name="$1" t0 rc
   shift
   t0=$(date +%s)
-  "$@" >"$logs/$name.log" 2>&1 || rc=$?
+  # a subshell with set -e (the caller turned it off, so that a failing stage is reported)
+  (
+    set -e
+    "$@"
+  ) >"$logs/$name.log" 2>&1
+  rc=$?
   log "$name: $(($(date +%s) - t0)) s, exit $rc (log $logs/$name.log)"
   return $rc
 }
@@ -86,7 +91,7 @@ reference() {
   rm -rf "$d" && mkdir -p "$d"
   (cd "$d" && LD_LIBRARY_PATH="$plain/lib:${LD_LIBRARY_PATH:-}" mpirun -np 2 "$pbuild/lmp_peridem" \
     -in "$here/unittest/plugin/all_styles.in" -var potentials "$here/potentials" -log log.lammps \
-    -echo none -screen none)
+    -echo none -screen none) || return 1
 }
 
 plugin() { # peridemplugin.so loaded by the plain LAMMPS's own lmp: the same thermo output
@@ -96,14 +101,14 @@ plugin() { # peridemplugin.so loaded by the plain LAMMPS's own lmp: the same the
   (cd "$d" && LD_LIBRARY_PATH="$plain/lib:${LD_LIBRARY_PATH:-}" mpirun -np 2 "$plain/bin/lmp" \
     -in "$here/unittest/plugin/plugin_load.in" -var plugin "$pbuild/peridemplugin.so" \
     -var input "$here/unittest/plugin/all_styles.in" -var potentials "$here/potentials" \
-    -log log.lammps -echo none -screen none)
+    -log log.lammps -echo none -screen none) || return 1
   python3 "$here/unittest/scripts/thermo_compare.py" "$d/log.lammps" "$root/runs/driver/log.lammps"
 }
 
 intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo output
+  rm -rf "$src/src/PERIDEM"
   mkdir -p "$src/src/PERIDEM"
-  rsync -a --delete --include='*.cpp' --include='*.h' --exclude='*' "$here/src/" "$src/src/PERIDEM/"
-  cp "$here/src/README" "$src/src/PERIDEM/README"
+  cp "$here"/src/*.cpp "$here"/src/*.h "$here/src/README" "$src/src/PERIDEM/"
   cp "$here/cmake/Modules/Packages/PERIDEM.cmake" "$src/cmake/Modules/Packages/PERIDEM.cmake"
   # register the package with LAMMPS's CMake: one more standard package with a module
   if ! grep -q "^  PERIDEM$" "$src/cmake/CMakeLists.txt"; then
@@ -120,7 +125,7 @@ intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo out
   rm -rf "$d" && mkdir -p "$d"
   (cd "$d" && LD_LIBRARY_PATH="$intree/lib:${LD_LIBRARY_PATH:-}" mpirun -np 2 "$intree/bin/lmp" \
     -in "$here/unittest/plugin/all_styles.in" -var potentials "$here/potentials" \
-    -log log.lammps -echo none -screen none)
+    -log log.lammps -echo none -screen none) || return 1
   python3 "$here/unittest/scripts/thermo_compare.py" "$d/log.lammps" "$root/runs/driver/log.lammps"
 }
 
@@ -128,7 +133,11 @@ source "$here/unittest/scripts/mpi_env.sh"
 t_all=$(date +%s)
 rc=0
 for s in "${stages[@]}"; do
-  timed "$s" "$s" || { rc=1; break; }
+  set +e
+  timed "$s" "$s"
+  r=$?
+  set -e
+  [ $r -eq 0 ] || { rc=1; break; }
 done
 log "total $(($(date +%s) - t_all)) s, exit $rc"
 exit $rc

@@ -16,8 +16,9 @@ if(NOT TARGET Eigen3::Eigen)
   message(FATAL_ERROR "The PERIDEM package needs Eigen 3 (Debian: libeigen3-dev); set Eigen3_DIR "
                       "to the folder of its Eigen3Config.cmake")
 endif()
-target_link_libraries(lammps PRIVATE Eigen3::Eigen)
-
-# The styles' own warnings, as the stand-alone build compiles them.
+# Eigen's include folder and the warnings of the stand-alone build for the package's own files
+# only: flags on the whole lammps target would recompile all of LAMMPS when the package is added.
+get_target_property(PERIDEM_EIGEN_INCLUDE Eigen3::Eigen INTERFACE_INCLUDE_DIRECTORIES)
 file(GLOB PERIDEM_SOURCES ${LAMMPS_SOURCE_DIR}/PERIDEM/*.cpp)
+set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY INCLUDE_DIRECTORIES ${PERIDEM_EIGEN_INCLUDE})
 set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -Wextra -Wno-unused-parameter)
