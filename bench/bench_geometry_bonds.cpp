@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Benchmark: build 500 grains of ~150 nodes each (lattice nodes + bonds with
 // Bhattacharya & Lipton 2023, §5 pruning), as the grain-creation command
 // does. Not a unit test; build by hand, e.g. from the repo root:
@@ -25,11 +34,11 @@ int main()
       const int s = g % 5;
       std::map<std::string, double> params;
       if (s == 0) params["seed"] = g;
-      Polygon shape = makeShape(names[s], params);
+      Polygon shape = make_shape(names[s], params);
       shape.rotate(0.37 * g).translate({3.0 * g * sizes[s], 0.0}); // distinct grains
       GrainOptions opt;
       opt.pruning = pruning;
-      const Grain2D gr = discretizeGrain(shape, hs[s], 3.0 * hs[s], opt);
+      const Grain2D gr = discretize_grain(shape, hs[s], 3.0 * hs[s], opt);
       nodes += gr.nodes.size();
       bonds += gr.bonds.size();
     }

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: registration of all PERIDEM styles into a LAMMPS instance, for
    lmp_peridem, libperidem's post_create hook and the Python routes
    (peridem_register). LAMMPS as packaged by Debian has no PLUGIN package;
@@ -26,27 +35,30 @@ using namespace LAMMPS_NS;
 namespace {
 
 // inserts each style into the style map of its kind
-class MapInserter : public PERIDEM::StyleSink {
+class MapInserter : public peridem_lmp::StyleSink {
  public:
   explicit MapInserter(LAMMPS *lmp) : lmp(lmp) {}
-  void atom(const char *name, PERIDEM::AtomVecCreator c) override
+  void atom(const char *name, peridem_lmp::AtomVecCreator c) override
   {
     (*lmp->atom->avec_map)[name] = c;
   }
-  void bond(const char *name, PERIDEM::BondCreator c) override
+  void bond(const char *name, peridem_lmp::BondCreator c) override
   {
     (*lmp->force->bond_map)[name] = c;
   }
-  void pair(const char *name, PERIDEM::PairCreator c) override
+  void pair(const char *name, peridem_lmp::PairCreator c) override
   {
     (*lmp->force->pair_map)[name] = c;
   }
-  void fix(const char *name, PERIDEM::FixCreator c) override { (*lmp->modify->fix_map)[name] = c; }
-  void compute(const char *name, PERIDEM::ComputeCreator c) override
+  void fix(const char *name, peridem_lmp::FixCreator c) override
+  {
+    (*lmp->modify->fix_map)[name] = c;
+  }
+  void compute(const char *name, peridem_lmp::ComputeCreator c) override
   {
     (*lmp->modify->compute_map)[name] = c;
   }
-  void command(const char *name, PERIDEM::CommandCreator c) override
+  void command(const char *name, peridem_lmp::CommandCreator c) override
   {
     (*lmp->input->command_map)[name] = c;
   }
@@ -57,7 +69,7 @@ class MapInserter : public PERIDEM::StyleSink {
 
 } // namespace
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 std::string version_mismatch_message(const std::string &compiled, const std::string &running)
 {
@@ -80,12 +92,12 @@ void register_styles(LAMMPS *lmp, const std::string &expected_version)
   for_each_style(inserter);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 extern "C" int peridem_register(void *lmp)
 {
   if (!lmp) return 1;
-  PERIDEM::register_styles(static_cast<LAMMPS *>(lmp), LAMMPS_VERSION);
+  peridem_lmp::register_styles(static_cast<LAMMPS *>(lmp), LAMMPS_VERSION);
   return 0;
 }
 

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: registration of all PERIDEM styles into a LAMMPS instance
    (lmp_peridem, libperidem, the Python routes); see register_driver.cpp.
 ------------------------------------------------------------------------- */
@@ -22,7 +31,7 @@ int peridem_register(void *lmp);
 const char *peridem_lammps_version();
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 /* The message for a version mismatch, empty when the versions agree. */
 std::string version_mismatch_message(const std::string &compiled, const std::string &running);
@@ -35,6 +44,6 @@ void check_lammps_version(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_ve
    `expected_version`; peridem_register() passes the compiled-in version. */
 void register_styles(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_version);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

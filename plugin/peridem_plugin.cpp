@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM as a LAMMPS plugin (peridemplugin.so) for LAMMPS builds with the
    PLUGIN package: "plugin load peridemplugin.so". Debian's LAMMPS has no
    PLUGIN package; there use lmp_peridem, LD_PRELOAD or peridem_register
@@ -24,38 +33,38 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// Passes each style of PERIDEM::for_each_style to the plugin loader. The
+// Passes each style of peridem_lmp::for_each_style to the plugin loader. The
 // loader stores a creator as an untyped factory and casts it back to the
 // typed creator of its style kind (Force::PairCreator, ...), so the typed
 // creators travel through the casts unchanged.
-class PluginRegistrar : public PERIDEM::StyleSink {
+class PluginRegistrar : public peridem_lmp::StyleSink {
  public:
   PluginRegistrar(LAMMPS *lmp, void *handle, lammpsplugin_regfunc reg)
       : lmp(lmp), handle(handle), reg(reg)
   {
   }
   // the loader of LAMMPS 29Sep2021 has no atom styles: insert it directly
-  void atom(const char *name, PERIDEM::AtomVecCreator c) override
+  void atom(const char *name, peridem_lmp::AtomVecCreator c) override
   {
     (*lmp->atom->avec_map)[name] = c;
   }
-  void bond(const char *name, PERIDEM::BondCreator c) override
+  void bond(const char *name, peridem_lmp::BondCreator c) override
   {
     add("bond", name, (lammpsplugin_factory1 *)c, nullptr);
   }
-  void pair(const char *name, PERIDEM::PairCreator c) override
+  void pair(const char *name, peridem_lmp::PairCreator c) override
   {
     add("pair", name, (lammpsplugin_factory1 *)c, nullptr);
   }
-  void fix(const char *name, PERIDEM::FixCreator c) override
+  void fix(const char *name, peridem_lmp::FixCreator c) override
   {
     add("fix", name, nullptr, (lammpsplugin_factory2 *)c);
   }
-  void compute(const char *name, PERIDEM::ComputeCreator c) override
+  void compute(const char *name, peridem_lmp::ComputeCreator c) override
   {
     add("compute", name, nullptr, (lammpsplugin_factory2 *)c);
   }
-  void command(const char *name, PERIDEM::CommandCreator c) override
+  void command(const char *name, peridem_lmp::CommandCreator c) override
   {
     add("command", name, (lammpsplugin_factory1 *)c, nullptr);
   }
@@ -88,7 +97,7 @@ extern "C" void lammpsplugin_init(void *lmp_ptr, void *handle, void *regfunc)
 {
   auto *lmp = static_cast<LAMMPS *>(lmp_ptr);
   // refuses a LAMMPS of another version with a clear error, as peridem_register does
-  PERIDEM::check_lammps_version(lmp, LAMMPS_VERSION);
+  peridem_lmp::check_lammps_version(lmp, LAMMPS_VERSION);
   PluginRegistrar registrar(lmp, handle, (lammpsplugin_regfunc)regfunc);
-  PERIDEM::for_each_style(registrar);
+  peridem_lmp::for_each_style(registrar);
 }

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Builds LAMMPS 4 Feb 2025 (the source of Debian 13 "trixie", lammps 20250204+dfsg.1-2)
 # outside the repository and checks PERIDEM against it, three ways:
 #   1. out of tree: libperidem, lmp_peridem and the LAMMPS-level tests (ctest) built

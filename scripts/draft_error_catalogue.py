@@ -1,4 +1,12 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """Drafts rows of doc/errors.md from the tests that exist: runs the error tests
 (and the tests that expect a warning) verbosely, reads the source file and line
 LAMMPS prints with each ERROR/WARNING, and prints one catalogue row per error

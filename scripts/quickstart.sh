@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Quick start: install what is missing, build, and run the bundled example
 # examples/pile (grains of material M1 falling into a box) on 2 MPI ranks.
 # Prints where the output went.

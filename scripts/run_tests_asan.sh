@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Sanitizer build (AddressSanitizer + UndefinedBehaviorSanitizer) of PERIDEM and
 # its tests in build-asan/ (or $PERIDEM_ASAN_BUILD_DIR), then a stated subset of
 # the suite under the sanitizers:

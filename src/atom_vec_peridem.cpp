@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: peridynamic grains for LAMMPS.
    atom_style peridem, see doc/atom_style_peridem.rst
 ------------------------------------------------------------------------- */
@@ -37,21 +46,21 @@ AtomVecPeridem::AtomVecPeridem(LAMMPS *lmp)
 
   // x0 travels with the atom (exchange, restart) and to ghosts (borders):
   // bond styles compute reference bond vectors from the x0 of both nodes.
-  PERIDEM::set_fields(fields_grow,
-                      "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
-  PERIDEM::set_fields(fields_copy,
-                      "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
-  PERIDEM::set_fields(fields_comm, "");
-  PERIDEM::set_fields(fields_comm_vel, "");
-  PERIDEM::set_fields(fields_reverse, "");
-  PERIDEM::set_fields(fields_border, "molecule rmass vfrac x0");
-  PERIDEM::set_fields(fields_border_vel, "molecule rmass vfrac x0");
-  PERIDEM::set_fields(fields_exchange,
-                      "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
-  PERIDEM::set_fields(fields_restart, "molecule num_bond bond_type bond_atom rmass vfrac x0");
-  PERIDEM::set_fields(fields_create, "molecule num_bond nspecial rmass vfrac x0");
-  PERIDEM::set_fields(fields_data_atom, "id molecule type vfrac rmass x x0");
-  PERIDEM::set_fields(fields_data_vel, "id v");
+  peridem_lmp::set_fields(fields_grow,
+                          "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  peridem_lmp::set_fields(fields_copy,
+                          "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  peridem_lmp::set_fields(fields_comm, "");
+  peridem_lmp::set_fields(fields_comm_vel, "");
+  peridem_lmp::set_fields(fields_reverse, "");
+  peridem_lmp::set_fields(fields_border, "molecule rmass vfrac x0");
+  peridem_lmp::set_fields(fields_border_vel, "molecule rmass vfrac x0");
+  peridem_lmp::set_fields(fields_exchange,
+                          "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  peridem_lmp::set_fields(fields_restart, "molecule num_bond bond_type bond_atom rmass vfrac x0");
+  peridem_lmp::set_fields(fields_create, "molecule num_bond nspecial rmass vfrac x0");
+  peridem_lmp::set_fields(fields_data_atom, "id molecule type vfrac rmass x x0");
+  peridem_lmp::set_fields(fields_data_vel, "id v");
 
   setup_fields();
 }
@@ -166,7 +175,7 @@ void AtomVecPeridem::unpack_restart_init(int ilocal)
    compute property/atom names: vfrac, x0x, x0y, x0z
 ------------------------------------------------------------------------- */
 
-int AtomVecPeridem::property_atom(PERIDEM::PropertyAtomName name)
+int AtomVecPeridem::property_atom(peridem_lmp::PropertyAtomName name)
 {
   const std::string word(name);
   for (int i = 0; i < num_properties; i++)

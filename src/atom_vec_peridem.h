@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: peridynamic grains for LAMMPS.
    atom_style peridem: peridynamic nodes grouped into grains.
 ------------------------------------------------------------------------- */
@@ -35,7 +44,7 @@ class AtomVecPeridem : public AtomVec {
   void pack_restart_pre(int) override;
   void pack_restart_post(int) override;
   void unpack_restart_init(int) override;
-  int property_atom(PERIDEM::PropertyAtomName) override;
+  int property_atom(peridem_lmp::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 
  private:

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: bond_style peridem, bond-based peridynamics with breakage.
 
    The physics lives in peridem_bond_law.h (Bhattacharya & Lipton 2023, eq. 3.2,
@@ -46,7 +55,7 @@ BondPeridem::BondPeridem(LAMMPS *lmp)
       break_after_force(0), volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr),
       cache_ncalls(-1), cache_bondlist(nullptr)
 {
-  PERIDEM::cite_grain_shape(lmp);
+  peridem_lmp::cite_grain_shape(lmp);
   writedata = 1;
 }
 
@@ -75,7 +84,7 @@ double BondPeridem::reference_length(int i1, int i2) const
   double dx = x0[i1][0] - x0[i2][0];
   double dy = x0[i1][1] - x0[i2][1];
   double dz = x0[i1][2] - x0[i2][2];
-  PERIDEM::minimum_image(domain, dx, dy, dz);
+  peridem_lmp::minimum_image(domain, dx, dy, dz);
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
@@ -161,11 +170,11 @@ void BondPeridem::compute_chunked()
         continue;
       }
       const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
-      PERIDEM::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j], dy[j],
-                              dz[j], fbond);
+      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
+                                  dy[j], dz[j], fbond);
     }
   }
-  if (current >= 0) PERIDEM::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -214,14 +223,14 @@ void BondPeridem::compute_one_by_one(int eflag)
     // LAMMPS's fbond multiplies x1 - x2
     const double fbond = r > 0.0 ? -peridem::bond_force_per_length(kb[n], inv_r0[n], 1.0 / r) : 0.0;
 
-    PERIDEM::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely, delz,
-                            fbond);
+    peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
+                                delz, fbond);
 
     if (eflag) ebond = peridem::bond_energy(kb[n], 1.0, s, r0, 1.0, 1.0);
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
     if (breaks) break_bond(n, i1, i2, r0, s0[type]);
   }
-  if (current >= 0) PERIDEM::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -327,18 +336,19 @@ void BondPeridem::settings(int narg, char **arg)
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
     const std::string value = arg[iarg + 1];
     if (key == "break") {
-      const int mode = PERIDEM::choice(lmp, STYLE, key, value, {"tension", "absolute", "off"});
+      const int mode = peridem_lmp::choice(lmp, STYLE, key, value, {"tension", "absolute", "off"});
       break_flag = mode != 2;
       if (mode == 1)
         breakage = peridem::BreakageMode::Absolute;
       else
         breakage = peridem::BreakageMode::Tension;
     } else if (key == "break_order") {
-      break_after_force = PERIDEM::choice(lmp, STYLE, key, value, {"before_force", "after_force"});
+      break_after_force =
+          peridem_lmp::choice(lmp, STYLE, key, value, {"before_force", "after_force"});
     } else if (key == "volume_correction") {
-      volume_correction = PERIDEM::choice(lmp, STYLE, key, value, {"none", "linear"});
+      volume_correction = peridem_lmp::choice(lmp, STYLE, key, value, {"none", "linear"});
     } else if (key == "cohesive") {
-      cohesive = PERIDEM::yes_no(lmp, STYLE, key, value);
+      cohesive = peridem_lmp::yes_no(lmp, STYLE, key, value);
     } else
       error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
   }
@@ -392,7 +402,7 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
 
   auto positive = [&](int iarg, const char *what) {
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, what);
-    const double v = PERIDEM::number(lmp, COEFF, what, arg[iarg + 1]);
+    const double v = peridem_lmp::number(lmp, COEFF, what, arg[iarg + 1]);
     if (!(v > 0.0))
       error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, style, arg[iarg + 1]);
     return v;
@@ -403,7 +413,7 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
     if (key == "material") {
       if (iarg + 2 >= narg)
         error->all(FLERR, "{}: material needs a file name and a material name", COEFF);
-      a.material = PERIDEM::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
+      a.material = peridem_lmp::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
       a.haveMaterial = true;
       a.origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
       iarg += 3;
@@ -411,13 +421,13 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
     }
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, key);
     if (key == "micromodulus") {
-      a.micro = PERIDEM::parse_micromodulus(lmp, COEFF, arg[iarg + 1]);
+      a.micro = peridem_lmp::parse_micromodulus(lmp, COEFF, arg[iarg + 1]);
       a.haveMicro = true;
     } else if (key == "influence") {
       a.influence = arg[iarg + 1];
       a.haveInfluence = true;
     } else if (key == "break") {
-      a.breakable = PERIDEM::yes_no(lmp, COEFF, key, arg[iarg + 1]);
+      a.breakable = peridem_lmp::yes_no(lmp, COEFF, key, arg[iarg + 1]);
     } else if (key == "E") {
       a.E = positive(iarg, "E (Young's modulus)");
       a.haveE = true;
@@ -532,8 +542,9 @@ void BondPeridem::coeff(int narg, char **arg)
     utils::logmesg(lmp,
                    "{} type {}: c = {:.10g}, s0 = {:.10g}, horizon = {:.10g}, {} micromodulus, "
                    "{}d ({}){}\n",
-                   STYLE, arg[0], p.c, p.s0, p.horizon, PERIDEM::micromodulus_name(p.micromodulus),
-                   dimension, origin, p.breakable ? "" : ", unbreakable");
+                   STYLE, arg[0], p.c, p.s0, p.horizon,
+                   peridem_lmp::micromodulus_name(p.micromodulus), dimension, origin,
+                   p.breakable ? "" : ", unbreakable");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -629,7 +640,7 @@ double BondPeridem::equilibrium_distance(int i)
 // break_order, ...) were lost in a restart
 void BondPeridem::write_restart(FILE *fp)
 {
-  PERIDEM::write_restart_tag(fp, PERIDEM::RESTART_BOND_PERIDEM);
+  peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_BOND_PERIDEM);
   write_restart_settings(fp);
   const int n = atom->nbondtypes;
   for (double *a : {c, s0, horizon, spacing}) fwrite(&a[1], sizeof(double), n, fp);
@@ -639,7 +650,7 @@ void BondPeridem::write_restart(FILE *fp)
 
 void BondPeridem::read_restart(FILE *fp)
 {
-  PERIDEM::check_restart_tag(lmp, fp, PERIDEM::RESTART_BOND_PERIDEM, "bond_style peridem");
+  peridem_lmp::check_restart_tag(lmp, fp, peridem_lmp::RESTART_BOND_PERIDEM, "bond_style peridem");
   read_restart_settings(fp);
   allocate();
   const int n = atom->nbondtypes;

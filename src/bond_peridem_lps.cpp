@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: bond_style peridem/lps, the linear peridynamic solid of
    Jha, Desai, Bhattacharya & Lipton (PeriDEM, eq. 5-10, 33-34) on LAMMPS's
    bond list. The physics is in peridem_lps_law.h; coefficient parsing,
@@ -47,7 +56,7 @@ BondPeridemLPS::BondPeridemLPS(LAMMPS *lmp)
       plane(peridem::LpsPlane::PlaneStrain), dfac(3.0), sum(nullptr), theta_over_m(nullptr),
       inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1)
 {
-  PERIDEM::cite_peridem(lmp);
+  peridem_lmp::cite_peridem(lmp);
 }
 
 BondPeridemLPS::~BondPeridemLPS()
@@ -243,8 +252,8 @@ void BondPeridemLPS::compute(int eflag, int vflag)
                                              theta_over_m[i2], inv_m[i1], inv_m[i2]);
     // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
     const double fbond = r > 0.0 ? -F / r : 0.0;
-    PERIDEM::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely, delz,
-                            fbond);
+    peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
+                                delz, fbond);
     if (evflag) {
       if (eflag)
         ebond = peridem::lps_bond_energy(lc[type], bc[n].k, bc[n].r0, e, theta_of(i1), theta_of(i2),
@@ -255,7 +264,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
         peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage))
       break_bond(n, i1, i2, bc[n].r0, s0[type]);
   }
-  if (current >= 0) PERIDEM::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -270,7 +279,7 @@ void BondPeridemLPS::settings(int narg, char **arg)
     if (strcmp(arg[iarg], "plane") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword plane needs a value", STYLE);
       plane = peridem::LpsPlane(
-          PERIDEM::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
+          peridem_lmp::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
       continue;
     }
     rest.push_back(arg[iarg]);
@@ -325,8 +334,8 @@ void BondPeridemLPS::coeff(int narg, char **arg)
                  COEFF, STYLE);
   }
   if (a.haveInfluence)
-    infl = PERIDEM::choice(lmp, COEFF, "influence", a.influence,
-                           {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
+    infl = peridem_lmp::choice(lmp, COEFF, "influence", a.influence,
+                               {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
   try {
     // Jha et al. 2021, eq. 10 (Zhu & Zhao's 3D LPS value; used in 2D too, as the paper does)
     s0val = a.haveGc ? peridem::lps_critical_stretch(K, G, a.Gc, eps) : a.s0;
@@ -372,7 +381,7 @@ void BondPeridemLPS::init_style()
 
 void BondPeridemLPS::write_restart(FILE *fp)
 {
-  PERIDEM::write_restart_tag(fp, PERIDEM::RESTART_BOND_PERIDEM_LPS);
+  peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_BOND_PERIDEM_LPS);
   write_restart_settings(fp); // see BondPeridem::write_restart
   const int n = atom->nbondtypes;
   for (double *arr : {bulk, shear, s0, horizon, spacing}) fwrite(&arr[1], sizeof(double), n, fp);
@@ -382,7 +391,8 @@ void BondPeridemLPS::write_restart(FILE *fp)
 
 void BondPeridemLPS::read_restart(FILE *fp)
 {
-  PERIDEM::check_restart_tag(lmp, fp, PERIDEM::RESTART_BOND_PERIDEM_LPS, "bond_style peridem/lps");
+  peridem_lmp::check_restart_tag(lmp, fp, peridem_lmp::RESTART_BOND_PERIDEM_LPS,
+                                 "bond_style peridem/lps");
   read_restart_settings(fp);
   allocate_lps();
   const int n = atom->nbondtypes;

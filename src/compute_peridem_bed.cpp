@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: compute peridem/bed, measures of a bed of grains in a
    container for thermo and variables.
 
@@ -91,7 +100,7 @@ ComputePeridemBed::~ComputePeridemBed()
 
 void ComputePeridemBed::init()
 {
-  Region *region = PERIDEM::find_region(domain, id_region);
+  Region *region = peridem_lmp::find_region(domain, id_region);
   if (!region) error->all(FLERR, "{}: region {} does not exist", STYLE, id_region);
   if (!region->bboxflag)
     error->all(FLERR, "{}: region {} has no bounding box to serve as the container", STYLE,
@@ -114,7 +123,7 @@ void ComputePeridemBed::init()
 
 void ComputePeridemBed::find_holes()
 {
-  const tagint maxmol = PERIDEM::max_grain_id(lmp);
+  const tagint maxmol = peridem_lmp::max_grain_id(lmp);
   holes.assign(maxmol + 1, 0.0);
   holes_ready = true;
   if (domain->dimension != 2) return;
@@ -124,7 +133,7 @@ void ComputePeridemBed::find_holes()
     mine.insert(mine.end(),
                 {double(atom->molecule[i]), atom->x0[i][0], atom->x0[i][1], atom->vfrac[i]});
   }
-  const std::vector<double> all = PERIDEM::gather_all(lmp, mine);
+  const std::vector<double> all = peridem_lmp::gather_all(lmp, mine);
   std::vector<std::vector<double>> xy(maxmol + 1);
   std::vector<double> vmax(maxmol + 1, 0.0);
   for (size_t k = 0; k < all.size(); k += 4) {
@@ -144,7 +153,7 @@ void ComputePeridemBed::compute_vector()
   invoked_vector = update->ntimestep;
   // grains added since the holes were found (create_peridem_grains between
   // runs) need their holes, and rows in the per-grain sums
-  if (!holes_ready || PERIDEM::max_grain_id(lmp) != tagint(holes.size()) - 1) find_holes();
+  if (!holes_ready || peridem_lmp::max_grain_id(lmp) != tagint(holes.size()) - 1) find_holes();
   const int vd = domain->dimension == 2 ? 1 : 2; // vertical: y in 2d, z in 3d
   const int nlat = domain->dimension == 2 ? 1 : 2;
   double **x = atom->x;
@@ -152,7 +161,7 @@ void ComputePeridemBed::compute_vector()
   const tagint maxmol = tagint(holes.size()) - 1;
 
   // volume per grain: the bed's volume, its grains and their mean size
-  const std::vector<double> per_grain = PERIDEM::grain_reduce(
+  const std::vector<double> per_grain = peridem_lmp::grain_reduce(
       lmp, groupbit, maxmol, 1, [&](int i, double *r) { r[0] += atom->vfrac[i]; });
   double vgrain = 0.0, vholes = 0.0;
   int ngrains = 0;

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: compute peridem/damage.
 
    Per node (Bhattacharya & Lipton 2023, §3.1, Jha et al. 2021, eq. 14):
@@ -127,8 +136,8 @@ void ComputePeridemDamage::count_bonds()
       double du[3];
       for (int d = 0; d < 3; d++) du[d] = (x[j][d] - x[i][d]) - (x0[j][d] - x0[i][d]);
       double xi[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      PERIDEM::minimum_image(domain, du[0], du[1], du[2]);
-      PERIDEM::minimum_image(domain, xi[0], xi[1], xi[2]);
+      peridem_lmp::minimum_image(domain, du[0], du[1], du[2]);
+      peridem_lmp::minimum_image(domain, xi[0], xi[1], xi[2]);
       const double z =
           peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]),
                                std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]), s0[type]);
@@ -141,7 +150,7 @@ void ComputePeridemDamage::count_bonds()
       if (newton_bond || tag[i] < partner) bonds_local[0] += 1.0;
     }
   }
-  if (newton_bond) PERIDEM::reverse_comm(comm, this);
+  if (newton_bond) peridem_lmp::reverse_comm(comm, this);
 
   const double *nbroken = bonds_fix->broken_count();
   const double *zbroken = bonds_fix->broken_z();
@@ -191,9 +200,9 @@ void ComputePeridemDamage::grain_means()
   const int nlocal = atom->nlocal;
   const tagint *molecule = atom->molecule;
   const int *mask = atom->mask;
-  const tagint maxmol = PERIDEM::max_grain_id(lmp);
+  const tagint maxmol = peridem_lmp::max_grain_id(lmp);
   const std::vector<double> global =
-      PERIDEM::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
+      peridem_lmp::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
         row[0] += damage[i][PHI];
         row[1] += 1.0;
       });

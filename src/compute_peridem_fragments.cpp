@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: compute peridem/fragments.
 
    The fragments of a grain are the connected components of its intact
@@ -95,7 +104,7 @@ ComputePeridemFragments::ComputePeridemFragments(LAMMPS *lmp, int narg, char **a
   comm_forward = comm_reverse = 1;
 
   // grains are fixed at creation: the per-grain array has a row per grain ID
-  maxmol = PERIDEM::max_grain_id(lmp);
+  maxmol = peridem_lmp::max_grain_id(lmp);
   size_array_rows = std::max<tagint>(maxmol, 1);
   size_array_cols = 2;
   memory->create(per_grain, size_array_rows, 2, "peridem/fragments:per_grain");
@@ -112,7 +121,7 @@ ComputePeridemFragments::~ComputePeridemFragments()
 
 void ComputePeridemFragments::init()
 {
-  if (PERIDEM::max_grain_id(lmp) > maxmol)
+  if (peridem_lmp::max_grain_id(lmp) > maxmol)
     error->all(FLERR, "{} {}: grain IDs beyond {} were added after the compute was defined", STYLE,
                id, maxmol);
   last_step = -1;
@@ -153,7 +162,7 @@ void ComputePeridemFragments::propagate()
   for (int i = 0; i < nall; i++) root[i] = find_root(root, i);
 
   for (int i = 0; i < nlocal; i++) label[i] = (mask[i] & groupbit) ? double(tag[i]) : 0.0;
-  PERIDEM::forward_comm(comm, this);
+  peridem_lmp::forward_comm(comm, this);
 
   const double none = std::numeric_limits<double>::max();
   rootmin.assign(nall, none);
@@ -173,10 +182,10 @@ void ComputePeridemFragments::propagate()
     }
     if (force->newton_bond) { // a bond is stored by one of its atoms only
       std::vector<double> before(label, label + nlocal);
-      PERIDEM::reverse_comm(comm, this);
+      peridem_lmp::reverse_comm(comm, this);
       for (int i = 0; i < nlocal && !changed; i++) changed = label[i] != before[i];
     }
-    PERIDEM::forward_comm(comm, this);
+    peridem_lmp::forward_comm(comm, this);
     int any = 0;
     MPI_Allreduce(&changed, &any, 1, MPI_INT, MPI_MAX, world);
     if (!any) break;
@@ -231,7 +240,7 @@ void ComputePeridemFragments::collect()
     f[MASS] += atom->rmass[i];
   }
 
-  const std::vector<double> all = PERIDEM::gather_all(lmp, mine);
+  const std::vector<double> all = peridem_lmp::gather_all(lmp, mine);
 
   // merge the pieces of a fragment that lie on several ranks
   const size_t n = all.size() / NCOLS;

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: command create_peridem_bed, see doc/create_peridem_bed.rst.
 ------------------------------------------------------------------------- */
 
@@ -26,7 +35,7 @@ constexpr const char *CMD = "create_peridem_bed";
 
 CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp)
 {
-  PERIDEM::cite_grain_shape(lmp);
+  peridem_lmp::cite_grain_shape(lmp);
 }
 
 /* ----------------------------------------------------------------------
@@ -189,12 +198,12 @@ void CreatePeridemBed::command(int narg, char **arg)
         ro.perturb = perturb;
         ro.seed = opt.seed;
         ro.max_count = static_cast<std::size_t>(count);
-        p = peridem::rowPacking(dist, ro);
+        p = peridem::row_packing(dist, ro);
         grow = false;
         count = static_cast<long long>(p.radius.size());
       } else {
-        const auto radii = peridem::drawRadii(dist, count, static_cast<std::uint64_t>(seed));
-        p = peridem::packSpheres(radii, opt);
+        const auto radii = peridem::draw_radii(dist, count, static_cast<std::uint64_t>(seed));
+        p = peridem::pack_spheres(radii, opt);
       }
       // sizes before and after the rattler growth (it shifts them up)
       auto moments = [](const std::vector<double> &r, double &mean, double &sd) {
@@ -210,9 +219,9 @@ void CreatePeridemBed::command(int narg, char **arg)
       if (grow) {
         // Bhattacharya & Lipton (2023) §7.1 step 4: each rattler takes the largest disk its cage
         // holds, capped at the distribution's upper bound
-        g = peridem::growRattlers(p, dist.largest(), tolerance);
+        g = peridem::grow_rattlers(p, dist.largest(), tolerance);
       } else if (!rows) {
-        const auto rep = peridem::jammingReport(p, tolerance);
+        const auto rep = peridem::jamming_report(p, tolerance);
         g.before = g.after = rep.rattlers;
       }
       moments(p.radius, mean1, sd1);

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: command create_peridem_grains, see
    doc/create_peridem_grains.rst.
 ------------------------------------------------------------------------- */
@@ -47,7 +56,7 @@ const std::map<std::string, std::map<std::string, double>> &solid_shapes()
 
 const peridem::ShapeInfo *builtin_shape(const std::string &name)
 {
-  for (const auto &s : peridem::builtinShapes())
+  for (const auto &s : peridem::builtin_shapes())
     if (s.name == name) return &s;
   return nullptr;
 }
@@ -186,7 +195,7 @@ peridem::EnclosingCircle security_disk(const peridem::Ring &ring)
 {
   std::vector<std::array<double, 2>> pts;
   for (const auto &v : ring) pts.push_back({v.x, v.y});
-  return peridem::smallestEnclosingCircle(pts);
+  return peridem::smallest_enclosing_circle(pts);
 }
 
 } // namespace
@@ -233,7 +242,7 @@ struct CreatePeridemGrains::Grain {
 
 CreatePeridemGrains::CreatePeridemGrains(LAMMPS *lmp) : Command(lmp)
 {
-  PERIDEM::cite_grain_shape(lmp);
+  peridem_lmp::cite_grain_shape(lmp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -251,10 +260,10 @@ void CreatePeridemGrains::command(int narg, char **arg)
   parse(narg, arg, opt);
   check(opt);
   if (opt.shape == "gmsh" || opt.shape == "file")
-    opt.file_text =
-        PERIDEM::read_text_file(lmp, CMD, opt.shape == "gmsh" ? "Gmsh" : "polygon", opt.file, true);
+    opt.file_text = peridem_lmp::read_text_file(lmp, CMD, opt.shape == "gmsh" ? "Gmsh" : "polygon",
+                                                opt.file, true);
   if (!opt.boundary.empty())
-    opt.boundary_text = PERIDEM::read_text_file(lmp, CMD, "polygon", opt.boundary, true);
+    opt.boundary_text = peridem_lmp::read_text_file(lmp, CMD, "polygon", opt.boundary, true);
   std::vector<const Grain *> per_grain;
   std::map<double, Grain> by_radius; // bed files: one discretization per security-disk radius
   for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
@@ -315,7 +324,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     error->all(FLERR,
                "{}: unknown shape '{}'; use one of {}, sphere, box, cylinder, file FILE or "
                "gmsh FILE",
-               CMD, o.shape, peridem::builtinShapeList());
+               CMD, o.shape, peridem::builtin_shape_list());
   }
 
   bool have_material = false;
@@ -345,7 +354,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       o.density = positive(arg[iarg++], "density");
     } else if (key == "material") {
       need(2, "material");
-      material = PERIDEM::load_material(lmp, CMD, arg[iarg], arg[iarg + 1]);
+      material = peridem_lmp::load_material(lmp, CMD, arg[iarg], arg[iarg + 1]);
       have_material = true;
       iarg += 2;
     } else if (key == "bond/type") {
@@ -502,7 +511,7 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
   try {
     if (o.shape == "gmsh") {
       std::istringstream mesh_text(o.file_text);
-      peridem::Mesh2D mesh = peridem::parseGmshMesh(mesh_text, o.file);
+      peridem::Mesh2D mesh = peridem::parse_gmsh_mesh(mesh_text, o.file);
       double scale = o.scale;
       peridem::Vec2 c;
       if (o.fit_radius > 0.0) { // centre of the security disk, diameter matched
@@ -513,7 +522,7 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
       }
       for (auto &v : mesh.vertices) v = v * scale;
       if (o.fit_radius == 0.0) {
-        peridem::Nodes2D nodes = peridem::meshNodes(mesh);
+        peridem::Nodes2D nodes = peridem::mesh_nodes(mesh);
         double area = 0.0;
         for (std::size_t i = 0; i < nodes.size(); i++) {
           c = c + nodes.x[i] * nodes.volume[i];
@@ -525,11 +534,11 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
       peridem::Polygon boundary;
       if (!o.boundary.empty()) {
         std::istringstream boundary_text(o.boundary_text);
-        boundary = peridem::parsePolygon(boundary_text, o.boundary);
+        boundary = peridem::parse_polygon(boundary_text, o.boundary);
         boundary.scale(scale).translate(c * -1.0);
       }
       const peridem::Grain2D grain =
-          peridem::meshGrain(mesh, o.horizon, o.boundary.empty() ? nullptr : &boundary, o.notches);
+          peridem::mesh_grain(mesh, o.horizon, o.boundary.empty() ? nullptr : &boundary, o.notches);
       for (std::size_t i = 0; i < grain.nodes.size(); i++)
         g.x.push_back({grain.nodes.x[i].x, grain.nodes.x[i].y, 0.0});
       g.volume = grain.nodes.volume;
@@ -555,7 +564,8 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
                            : o.shape == "box"
                                ? peridem::Shape3D::box(p["lx"], p["ly"], p["lz"])
                                : peridem::Shape3D::cylinder(p["radius"], p["height"]);
-      const peridem::Grain3D grain = peridem::discretizeGrain3D(s, o.spacing, o.horizon, o.pruning);
+      const peridem::Grain3D grain =
+          peridem::discretize_grain_3d(s, o.spacing, o.horizon, o.pruning);
       for (const auto &v : grain.nodes.x) g.x.push_back({v.x, v.y, v.z});
       g.volume = grain.nodes.volume;
       g.bonds = grain.bonds;
@@ -566,10 +576,10 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
     peridem::Polygon shape;
     if (o.shape == "file") {
       std::istringstream shape_text(o.file_text);
-      shape = peridem::parsePolygon(shape_text, o.file);
+      shape = peridem::parse_polygon(shape_text, o.file);
       shape.translate(shape.centroid() * -1.0);
     } else {
-      shape = peridem::makeShape(o.shape, o.params);
+      shape = peridem::make_shape(o.shape, o.params);
     }
     shape.scale(o.scale);
     double extrude = o.extrude;
@@ -583,13 +593,13 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
 
     if (extrude > 0.0) {
       const peridem::Shape3D s = peridem::Shape3D::extrusion(shape, extrude);
-      peridem::Grain3D grain = peridem::discretizeGrain3D(s, o.spacing, o.horizon, o.pruning);
+      peridem::Grain3D grain = peridem::discretize_grain_3d(s, o.spacing, o.horizon, o.pruning);
       std::vector<peridem::Vec2> xy;
       for (const auto &v : grain.nodes.x) {
         g.x.push_back({v.x, v.y, v.z});
         xy.emplace_back(v.x, v.y);
       }
-      peridem::removeBondsCrossing(grain.bonds, xy, o.notches);
+      peridem::remove_bonds_crossing(grain.bonds, xy, o.notches);
       g.volume = grain.nodes.volume;
       g.bonds = grain.bonds;
       return;
@@ -599,7 +609,7 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
     gopt.lattice.volume = o.volume;
     gopt.pruning = o.pruning;
     gopt.cuts = o.notches;
-    const peridem::Grain2D grain = peridem::discretizeGrain(shape, o.spacing, o.horizon, gopt);
+    const peridem::Grain2D grain = peridem::discretize_grain(shape, o.spacing, o.horizon, gopt);
     for (const auto &v : grain.nodes.x) g.x.push_back({v.x, v.y, 0.0});
     g.volume = grain.nodes.volume;
     g.bonds = grain.bonds;
@@ -770,7 +780,7 @@ void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain 
     atom->map_set();
   }
   const bigint nbonds_previous = atom->nbonds;
-  const bigint nbonds = PERIDEM::finish_bond_edit(lmp);
+  const bigint nbonds = peridem_lmp::finish_bond_edit(lmp);
 
   if (comm->me == 0) {
     if (o.at_radius.empty())
@@ -800,7 +810,7 @@ void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain 
 
 void CreatePeridemGrains::read_positions(const char *file, Options &o)
 {
-  std::istringstream in(PERIDEM::read_text_file(lmp, CMD, "positions", file, false));
+  std::istringstream in(peridem_lmp::read_text_file(lmp, CMD, "positions", file, false));
   std::string line;
   int columns = 0;
   for (int lineno = 1; std::getline(in, line); lineno++) {

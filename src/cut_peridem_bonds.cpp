@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: command cut_peridem_bonds, see doc/cut_peridem_bonds.rst.
 ------------------------------------------------------------------------- */
 
@@ -84,7 +93,7 @@ void CutPeridemBonds::command(int narg, char **arg)
       if ((mask[i] & groupbit) && (mask[j] & groupbit)) {
         const int a = tag[i] < tag[j] ? i : j, b = tag[i] < tag[j] ? j : i;
         const peridem::Vec2 xa(x0[a][0], x0[a][1]), xb(x0[b][0], x0[b][1]);
-        for (const auto &c : cuts) cut = cut || peridem::bondCrossesCut(xa, xb, c);
+        for (const auto &c : cuts) cut = cut || peridem::bond_crosses_cut(xa, xb, c);
       }
       if (!cut) {
         m++;
@@ -96,7 +105,7 @@ void CutPeridemBonds::command(int narg, char **arg)
     }
   }
 
-  const bigint nbonds = PERIDEM::finish_bond_edit(lmp);
+  const bigint nbonds = peridem_lmp::finish_bond_edit(lmp);
   if (comm->me == 0)
     utils::logmesg(lmp, "{}: removed {} bonds crossing {} segment(s), new total = {}\n", CMD,
                    nbonds_previous - nbonds, cuts.size(), nbonds);

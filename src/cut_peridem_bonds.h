@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: command cut_peridem_bonds, see doc/cut_peridem_bonds.rst.
 
    Removes the existing bonds that cross given line segments (pre-notches,

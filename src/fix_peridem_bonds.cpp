@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: fix peridem/bonds, the bookkeeping of broken bonds.
 ------------------------------------------------------------------------- */
 
@@ -111,7 +120,7 @@ void FixPeridemBonds::pre_exchange()
   if (escapes_deleted) return;
   double **x = atom->x;
   for (int i = 0; i < atom->nlocal; i++) {
-    const int face = PERIDEM::outside_fixed_boundary(domain, x[i]);
+    const int face = peridem_lmp::outside_fixed_boundary(domain, x[i]);
     if (face < 0) continue;
     static const char *const faces[] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
     error->one(FLERR,
@@ -142,7 +151,7 @@ void FixPeridemBonds::collect()
   broken_here = 0;
   if (all == 0) return; // nothing to send home: ghost entries are still zero
   comm_mode = COUNTS;
-  PERIDEM::reverse_comm(comm, this);
+  peridem_lmp::reverse_comm(comm, this);
   clear_ghosts();
   // every broken bond was counted once (see bond_broken): keep the global
   // bond count of write_data and thermo right
@@ -152,7 +161,7 @@ void FixPeridemBonds::collect()
   // neighbour list holds the pair and contact acts between the pieces
   if (force->newton_bond) {
     comm_mode = PARTNERS;
-    PERIDEM::reverse_comm_variable(comm, this);
+    peridem_lmp::reverse_comm_variable(comm, this);
   }
   const int nlocal = atom->nlocal;
   for (const auto &[i, partners] : lost_partners)
@@ -390,14 +399,14 @@ void FixPeridemBonds::reverse_sum(double *a)
 {
   comm_mode = SUM;
   comm_a = a;
-  PERIDEM::reverse_comm(comm, this, 1);
+  peridem_lmp::reverse_comm(comm, this, 1);
 }
 
 void FixPeridemBonds::forward(double *a, double *b)
 {
   comm_a = a;
   comm_b = b;
-  PERIDEM::forward_comm(comm, this, 2);
+  peridem_lmp::forward_comm(comm, this, 2);
 }
 
 int FixPeridemBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)

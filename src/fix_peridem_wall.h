@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: fix peridem/wall, rigid analytic container walls.
 
    An axis-aligned rectangle (2D) or box (3D) of flat walls that push the
@@ -69,7 +78,7 @@ class FixPeridemWall : public Fix {
   };
   Wall walls[peridem::kMaxWalls];
   int nwalls; // 2 * dimension
-  PERIDEM::ContactSpec contact;
+  peridem_lmp::ContactSpec contact;
   // 'contact pair': the law of pair_style peridem/contact for the node's
   // type (pair_coeff I I), per atom type; empty otherwise
   bool contact_from_pair = false;

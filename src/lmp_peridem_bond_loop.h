@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: shared piece of the bond loops of bond_style peridem and
    peridem/lps.
 
@@ -16,7 +25,7 @@
 #ifndef LMP_PERIDEM_BOND_LOOP_H
 #define LMP_PERIDEM_BOND_LOOP_H
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // f[i] += (a0, a1, a2), f the flat force array
 inline void add_force(double *f, int i, double a0, double a1, double a2)
@@ -45,6 +54,6 @@ inline void add_bond_force(double *f, int &current, double *sum, int i1, int i2,
   if (to_i2) add_force(f, i2, -delx * fbond, -dely * fbond, -delz * fbond);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: the papers whose models the styles implement, registered with
    LAMMPS's citation reminder (lmp->citeme), as LAMMPS's own packages do:
    LAMMPS lists them at the end of a run (and in log.cite).
@@ -10,7 +19,7 @@
 #include "citeme.h"
 #include "lammps.h"
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // Bond-based grains, bond pruning, contact with friction and damping, walls, bed packings
 static const char cite_peridem_grain_shape[] =
@@ -45,6 +54,6 @@ inline void cite_peridem(LAMMPS_NS::LAMMPS *lmp)
   if (lmp->citeme) lmp->citeme->add(cite_peridem_2021);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: the differences between LAMMPS versions, in one place.
 
    PERIDEM builds against LAMMPS 29 Sep 2021 (Debian bookworm) and 4 Feb 2025.
@@ -21,7 +30,7 @@
 #include <string>
 #include <vector>
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 namespace compat_detail {
 // LAMMPS 2022 and later: Neighbor::add_request(Pair *, int flags = 0) (chosen when it exists:
@@ -161,6 +170,6 @@ void request_half_neighbor_list(LAMMPS_NS::Neighbor *neighbor, PairT *pair, int 
   compat_detail::request_half(neighbor, pair, instance_me, 0);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: contact keywords seen from LAMMPS commands.
 
    Choices (documented in doc/fix_peridem_wall.rst, "Contact keywords"):
@@ -27,7 +36,7 @@
 
 using namespace LAMMPS_NS;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 ContactParser::ContactParser(LAMMPS *lmp_in, std::string command_in)
     : lmp(lmp_in), command(std::move(command_in))
@@ -37,7 +46,7 @@ ContactParser::ContactParser(LAMMPS *lmp_in, std::string command_in)
 double ContactParser::number(int narg, char **arg, int iarg, const char *what) const
 {
   if (iarg >= narg) lmp->error->all(FLERR, "{}: keyword {} needs a value", command, what);
-  return PERIDEM::number(lmp, command, what, arg[iarg]);
+  return peridem_lmp::number(lmp, command, what, arg[iarg]);
 }
 
 double ContactParser::positive(int narg, char **arg, int iarg, const char *what) const
@@ -302,4 +311,4 @@ std::string describe_contact(const ContactSpec &spec)
                      describe_kn_form(spec.kn_form), spec.origin, p.Rc, damping, friction);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

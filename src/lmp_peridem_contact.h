@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: contact keywords seen from LAMMPS commands.
 
    The keywords below set one peridem::ContactParams (peridem_contact_law.h).
@@ -39,7 +48,7 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // The parsed result: the law's parameters and what they were derived from.
 struct ContactSpec {
@@ -110,6 +119,6 @@ std::string describe_kn_form(peridem::KnForm form);
 // One line for the log: "Kn = ..., Rc = ..., damping ..., friction ...".
 std::string describe_contact(const ContactSpec &spec);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: per-grain reductions, see lmp_peridem_grains.h.
 ------------------------------------------------------------------------- */
 
@@ -11,7 +20,7 @@
 
 using namespace LAMMPS_NS;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 tagint max_grain_id(LAMMPS *lmp)
 {
@@ -51,4 +60,4 @@ std::vector<double> gather_all(LAMMPS *lmp, const std::vector<double> &mine)
   return all;
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

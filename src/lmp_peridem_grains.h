@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: reductions over the nodes of each grain (molecule ID), shared
    by the computes that report per-grain or per-fragment quantities
    (peridem/damage, peridem/fragments, peridem/grain).
@@ -18,7 +27,7 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // Largest grain (molecule) ID on any rank; grain g has row g of the
 // reductions below (row 0 is unused: molecule IDs start at 1).
@@ -36,6 +45,6 @@ std::vector<double> grain_reduce(LAMMPS_NS::LAMMPS *lmp, int groupbit, LAMMPS_NS
 // every rank.
 std::vector<double> gather_all(LAMMPS_NS::LAMMPS *lmp, const std::vector<double> &mine);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

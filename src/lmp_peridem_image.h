@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: the minimum image of a displacement, only where a periodic
    dimension needs it. Domain::minimum_image is not inline; in the loops
    over all bonds the call costs more than the test, and most grain
@@ -12,7 +21,7 @@
 
 #include <cmath>
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 inline void minimum_image(LAMMPS_NS::Domain *domain, double &dx, double &dy, double &dz)
 {
@@ -22,6 +31,6 @@ inline void minimum_image(LAMMPS_NS::Domain *domain, double &dx, double &dy, dou
     domain->minimum_image(dx, dy, dz);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

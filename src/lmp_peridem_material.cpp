@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: material files seen from LAMMPS commands.
 ------------------------------------------------------------------------- */
 
@@ -18,7 +27,7 @@
 
 using namespace LAMMPS_NS;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 std::string read_text_file(LAMMPS *lmp, const std::string &command, const std::string &kind,
                            const std::string &file, bool potential)
@@ -86,4 +95,4 @@ const char *micromodulus_name(peridem::Micromodulus m)
   return m == peridem::Micromodulus::Conic ? "conic" : "constant";
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: material files seen from LAMMPS commands.
 
    Every PERIDEM style that takes material constants accepts
@@ -21,7 +30,7 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // The material NAME from FILE; `command` (e.g. "bond_coeff") names the
 // command in error messages. Errors end the run with a LAMMPS error.
@@ -42,6 +51,6 @@ peridem::Micromodulus parse_micromodulus(LAMMPS_NS::LAMMPS *lmp, const std::stri
                                          const std::string &word);
 const char *micromodulus_name(peridem::Micromodulus m);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: small helpers for parsing style arguments.
 ------------------------------------------------------------------------- */
 
@@ -12,7 +21,7 @@
 
 using namespace LAMMPS_NS;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 int choice(LAMMPS *lmp, const std::string &command, const std::string &keyword,
            const std::string &value, std::initializer_list<const char *> options)
@@ -48,4 +57,4 @@ double number(LAMMPS *lmp, const std::string &command, const std::string &keywor
   return v;
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: small helpers for parsing style arguments.
 ------------------------------------------------------------------------- */
 
@@ -12,7 +21,7 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // The position of `value` among `options` (e.g. {"no", "yes"}); otherwise a
 // LAMMPS error "<command>: <keyword> must be a, b or c, not <value>".
@@ -29,6 +38,6 @@ int yes_no(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string
 double number(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
               const char *value);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: format tags at the start of the restart sections of PERIDEM
    styles.
 ------------------------------------------------------------------------- */
@@ -17,7 +26,7 @@
 
 using namespace LAMMPS_NS;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 void write_restart_tag(FILE *fp, RestartTag tag)
 {
@@ -151,4 +160,4 @@ peridem::ContactParams read_contact_params_v1(LAMMPS *lmp, FILE *fp, const char 
                               (double)raw.friction, raw.mu});
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: format tags at the start of the restart sections of PERIDEM
    styles.
 ------------------------------------------------------------------------- */
@@ -14,7 +23,7 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // Restart sections of the PERIDEM force styles start with a tag that names
 // the style and the version of its format. A file of another format (an
@@ -52,6 +61,6 @@ void write_contact_params(FILE *fp, const peridem::ContactParams &p);
 peridem::ContactParams read_contact_params(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 peridem::ContactParams read_contact_params_v1(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: start-up checks (see lmp_peridem_startup.h)
 ------------------------------------------------------------------------- */
 
@@ -20,7 +29,7 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 void OverlapReport::add(tagint grain, const std::string &partner)
 {
@@ -92,4 +101,4 @@ void check_neighbor_skin(LAMMPS *lmp, const std::string &style, double cutoff)
                       std::max(0.0, reach - cutoff));
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: start-up checks shared by pair_style peridem/contact and
    fix peridem/wall.
 
@@ -26,7 +35,7 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // Collects the overlapping pairs seen on one rank (a grain ID and a partner: another grain's
 // ID or a wall name) and reports them on all ranks together.
@@ -60,6 +69,6 @@ double half_list_partners(int dimension, double reach, double volume);
 // more than `neigh_modify one` partners for a node of the smallest nodal volume.  Collective.
 void check_neighbor_skin(LAMMPS_NS::LAMMPS *lmp, const std::string &style, double cutoff);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

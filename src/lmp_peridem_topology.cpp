@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: bookkeeping after a command edits bonds.
 ------------------------------------------------------------------------- */
 
@@ -17,7 +26,7 @@
 
 using namespace LAMMPS_NS;
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 bigint finish_bond_edit(LAMMPS *lmp)
 {
@@ -113,4 +122,4 @@ bigint delete_nodes(LAMMPS *lmp, std::vector<int> doomed,
   return ngone;
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

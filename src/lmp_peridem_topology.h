@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: bookkeeping after a command edits bonds.
 
    Commands that add or remove peridynamic bonds on owned atoms
@@ -20,7 +29,7 @@ class Domain;
 class LAMMPS;
 } // namespace LAMMPS_NS
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // Recounts atom->nbonds on all ranks (bonds stored twice when newton_bond
 // is off count once) and rebuilds the special lists. Returns the new total.
@@ -41,6 +50,6 @@ int outside_fixed_boundary(const LAMMPS_NS::Domain *domain, const double *x);
 LAMMPS_NS::bigint delete_nodes(LAMMPS_NS::LAMMPS *lmp, std::vector<int> doomed,
                                const std::function<void(int, LAMMPS_NS::tagint)> &lost_partner);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: pair_style peridem/contact.
 
    The contact law (repulsion, damping, friction, self-contact) lives in
@@ -50,8 +59,8 @@ const char *const STYLE = "pair_style peridem/contact";
 PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
     : Pair(lmp), cut(nullptr), self_contact(1), dissipated(0.0), centroid_on(0), grains_stale(true)
 {
-  PERIDEM::cite_grain_shape(lmp);
-  PERIDEM::cite_peridem(lmp);
+  peridem_lmp::cite_grain_shape(lmp);
+  peridem_lmp::cite_peridem(lmp);
   restartinfo = 1;
   single_enable = 1;
   writedata = 0;
@@ -89,7 +98,7 @@ bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) con
   if (atom->molecule[i] == atom->molecule[j]) {
     if (!self_contact) return false;
     double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-    PERIDEM::minimum_image(domain, d0[0], d0[1], d0[2]);
+    peridem_lmp::minimum_image(domain, d0[0], d0[1], d0[2]);
     in.ref_dist = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
   }
   for (int k = 0; k < 3; k++) {
@@ -160,7 +169,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
       const double dz = x[j][2] - x[i][2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= cutsq[itype][jtype]) continue;
-      const PERIDEM::ContactSpec &sp = spec[itype][jtype];
+      const peridem_lmp::ContactSpec &sp = spec[itype][jtype];
 
       // two grains touch (closer than R_c, or centroid_range): damping
       // centroid of this grain pair (Jha et al. 2021, eq. 27)
@@ -403,7 +412,7 @@ void PairPeridemContact::settings(int narg, char **arg)
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
     const std::string value = arg[iarg + 1];
     if (key == "self") {
-      self_contact = PERIDEM::yes_no(lmp, STYLE, key, value);
+      self_contact = peridem_lmp::yes_no(lmp, STYLE, key, value);
     } else
       error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
   }
@@ -424,7 +433,7 @@ void PairPeridemContact::allocate()
       setflag[i][j] = 0;
       cut[i][j] = touchsq[i][j] = 0.0;
     }
-  spec.assign(n, std::vector<PERIDEM::ContactSpec>(n));
+  spec.assign(n, std::vector<peridem_lmp::ContactSpec>(n));
 }
 
 /* ----------------------------------------------------------------------
@@ -439,8 +448,8 @@ void PairPeridemContact::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const PERIDEM::ContactSpec s =
-      PERIDEM::parse_contact(lmp, "pair_coeff", narg - 2, &arg[2], domain->dimension, true);
+  const peridem_lmp::ContactSpec s =
+      peridem_lmp::parse_contact(lmp, "pair_coeff", narg - 2, &arg[2], domain->dimension, true);
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = std::max(jlo, i); j <= jhi; j++) {
@@ -450,7 +459,7 @@ void PairPeridemContact::coeff(int narg, char **arg)
     }
   if (count == 0) error->all(FLERR, "pair_coeff: no type pairs in {} {}", arg[0], arg[1]);
   if (comm->me == 0)
-    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, arg[0], arg[1], PERIDEM::describe_contact(s));
+    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, arg[0], arg[1], peridem_lmp::describe_contact(s));
 }
 
 /* ----------------------------------------------------------------------
@@ -464,8 +473,8 @@ void PairPeridemContact::mix(int i, int j)
   if (!setflag[i][i] || !setflag[j][j])
     error->all(FLERR, "{}: pair_coeff {} {} is not set and cannot be mixed from {} {} and {} {}",
                STYLE, i, j, i, i, j, j);
-  const PERIDEM::ContactSpec &a = spec[i][i], &b = spec[j][j];
-  PERIDEM::ContactSpec m = a;
+  const peridem_lmp::ContactSpec &a = spec[i][i], &b = spec[j][j];
+  peridem_lmp::ContactSpec m = a;
   peridem::ContactParams &p = m.params;
   if (a.params.damping != b.params.damping || a.params.friction != b.params.friction ||
       a.centroid != b.centroid)
@@ -501,13 +510,13 @@ void PairPeridemContact::mix(int i, int j)
   m.origin = fmt::format("mixed from types {} and {}", i, j);
   spec[i][j] = spec[j][i] = m;
   if (comm->me == 0)
-    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, i, j, PERIDEM::describe_contact(m));
+    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, i, j, peridem_lmp::describe_contact(m));
 }
 
 double PairPeridemContact::init_one(int i, int j)
 {
   if (!setflag[i][j]) mix(i, j);
-  const PERIDEM::ContactSpec &s = spec[i][j];
+  const peridem_lmp::ContactSpec &s = spec[i][j];
   const double touch = s.centroid ? s.centroid_reach() : 0.0;
   touchsq[i][j] = touchsq[j][i] = touch * touch;
   cut[i][j] = cut[j][i] = std::max(s.params.Rc, touch);
@@ -557,14 +566,14 @@ void PairPeridemContact::init_style()
   if (dissipative && !comm->ghost_velocity)
     error->all(FLERR, "{} with damping or friction needs ghost velocities: use comm_modify vel yes",
                STYLE);
-  PERIDEM::request_half_neighbor_list(neighbor, this, instance_me);
+  peridem_lmp::request_half_neighbor_list(neighbor, this, instance_me);
   double reach = 0.0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j])
         reach = std::max(
             {reach, spec[i][j].params.Rc, spec[i][j].centroid ? spec[i][j].centroid_reach() : 0.0});
-  PERIDEM::check_neighbor_skin(lmp, STYLE, reach);
+  peridem_lmp::check_neighbor_skin(lmp, STYLE, reach);
 }
 
 /* ----------------------------------------------------------------------
@@ -586,7 +595,7 @@ void PairPeridemContact::report_start_overlaps()
   double **x = atom->x;
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
-  PERIDEM::OverlapReport overlaps;
+  peridem_lmp::OverlapReport overlaps;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -644,7 +653,7 @@ void PairPeridemContact::report_time_step()
       in.node_volume = std::max(-a[1], -b[1]);
       in.rho = std::min(a[2], b[2]);
       in.bond_omega2 = std::max(bond_omega2[i], bond_omega2[j]);
-      in.walls = PERIDEM::has_fix_style(modify, "^peridem/wall");
+      in.walls = peridem_lmp::has_fix_style(modify, "^peridem/wall");
       in.Kn = p.Kn;
       in.Rc = p.Rc;
       in.damping_ratio = p.damping == peridem::ContactDamping::Nodal
@@ -708,7 +717,7 @@ std::vector<double> PairPeridemContact::bond_omega2_of_types()
       const int i1 = b[0], i2 = b[1];
       if (b[2] <= 0 || !(kb[n] > 0.0)) continue;
       double e[3] = {x0[i2][0] - x0[i1][0], x0[i2][1] - x0[i1][1], x0[i2][2] - x0[i1][2]};
-      PERIDEM::minimum_image(domain, e[0], e[1], e[2]);
+      peridem_lmp::minimum_image(domain, e[0], e[1], e[2]);
       const double r0 = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
       if (!(r0 > 0.0)) continue;
       for (double &ek : e) ek /= r0;
@@ -735,14 +744,14 @@ std::vector<double> PairPeridemContact::bond_omega2_of_types()
 
 void PairPeridemContact::write_restart(FILE *fp)
 {
-  PERIDEM::write_restart_tag(fp, PERIDEM::RESTART_PAIR_CONTACT);
+  peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_PAIR_CONTACT);
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (!setflag[i][j]) continue;
-      const PERIDEM::ContactSpec &s = spec[i][j];
-      PERIDEM::write_contact_params(fp, s.params);
+      const peridem_lmp::ContactSpec &s = spec[i][j];
+      peridem_lmp::write_contact_params(fp, s.params);
       const double extra[6] = {s.bulk_modulus,   s.horizon,
                                s.density,        s.centroid ? 1.0 : 0.0,
                                s.centroid_range, (double)peridem::kn_exponent(s.kn_form)};
@@ -754,7 +763,7 @@ void PairPeridemContact::read_restart(FILE *fp)
 {
   // format 1 (raw struct) is still read; format 2 writes field by field
   const int format =
-      PERIDEM::read_restart_version(lmp, fp, PERIDEM::RESTART_PAIR_CONTACT, 1, STYLE);
+      peridem_lmp::read_restart_version(lmp, fp, peridem_lmp::RESTART_PAIR_CONTACT, 1, STYLE);
   read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++)
@@ -762,9 +771,9 @@ void PairPeridemContact::read_restart(FILE *fp)
       if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
-      PERIDEM::ContactSpec &s = spec[i][j];
-      s.params = format == 1 ? PERIDEM::read_contact_params_v1(lmp, fp, STYLE)
-                             : PERIDEM::read_contact_params(lmp, fp, STYLE);
+      peridem_lmp::ContactSpec &s = spec[i][j];
+      s.params = format == 1 ? peridem_lmp::read_contact_params_v1(lmp, fp, STYLE)
+                             : peridem_lmp::read_contact_params(lmp, fp, STYLE);
       double extra[6];
       if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), 6, fp, nullptr, error);
       MPI_Bcast(extra, 6, MPI_DOUBLE, 0, world);
@@ -820,7 +829,7 @@ void *PairPeridemContact::extract(const char *str, int &dim)
 
 double PairPeridemContact::memory_usage()
 {
-  return Pair::memory_usage() + spec.size() * spec.size() * sizeof(PERIDEM::ContactSpec) +
+  return Pair::memory_usage() + spec.size() * spec.size() * sizeof(peridem_lmp::ContactSpec) +
          (grain_local.capacity() + grain_sum.capacity() + grain_force.capacity()) * sizeof(double) +
          (grain_table.capacity() + grain_of.capacity()) * sizeof(int) +
          grain_ids.capacity() * sizeof(tagint);

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: pair_style peridem/contact, nonlocal node-to-node contact with
    damping and friction between grains and within a grain (self-contact).
    See doc/pair_peridem_contact.rst.
@@ -41,7 +50,7 @@ class PairPeridemContact : public Pair {
   void *extract(const char *, int &) override;
 
   // the contact law of a type pair (after pair_coeff), e.g. for walls
-  const PERIDEM::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
+  const peridem_lmp::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
   bool type_set(int i, int j) const { return allocated && setflag[i][j]; }
   double memory_usage() override;
 
@@ -49,7 +58,7 @@ class PairPeridemContact : public Pair {
   // the contact law's input for atoms i, j; false: same grain, self-contact off
   bool pair_input(int i, int j, peridem::ContactInput &in) const;
   // contact law of each type pair, index [i][j] with 1 <= i, j <= ntypes
-  std::vector<std::vector<PERIDEM::ContactSpec>> spec;
+  std::vector<std::vector<peridem_lmp::ContactSpec>> spec;
   double **cut;      // contact radius of each type pair (or centroid_range)
   double **touchsq;  // squared distance below which grains touch (damping centroid)
   int self_contact;  // 1: nodes of one grain without an intact bond touch too

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // PERIDEM: derivation of the bond-based constants c and s0 (see peridem_bond_law.h).
 //
 // Derivation (d = 2 or 3, micromodulus w(r) = W(r/eps), bond energy per unit volume^2

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // 3D grain shapes, lattice and bonds (projection argument for extrusions).
 #include "peridem_geometry_3d.h"
 #include "peridem_math.h"
@@ -11,7 +20,7 @@ namespace peridem {
 
 namespace {
 
-void requirePositive(double v, const char *what)
+void require_positive_parameter(double v, const char *what)
 {
   if (!(v > 0.0) || !std::isfinite(v)) throw GeometryError(std::string(what) + " must be positive");
 }
@@ -25,7 +34,7 @@ Vec2 xy(const Vec3 &p)
 
 Shape3D Shape3D::sphere(double radius)
 {
-  requirePositive(radius, "sphere radius");
+  require_positive_parameter(radius, "sphere radius");
   Shape3D s;
   s.kind_ = Kind::Sphere;
   s.a_ = radius;
@@ -34,9 +43,9 @@ Shape3D Shape3D::sphere(double radius)
 
 Shape3D Shape3D::box(double lx, double ly, double lz)
 {
-  requirePositive(lx, "box x size");
-  requirePositive(ly, "box y size");
-  requirePositive(lz, "box z size");
+  require_positive_parameter(lx, "box x size");
+  require_positive_parameter(ly, "box y size");
+  require_positive_parameter(lz, "box z size");
   Shape3D s;
   s.kind_ = Kind::Box;
   s.a_ = 0.5 * lx, s.b_ = 0.5 * ly, s.c_ = 0.5 * lz;
@@ -45,8 +54,8 @@ Shape3D Shape3D::box(double lx, double ly, double lz)
 
 Shape3D Shape3D::cylinder(double radius, double height)
 {
-  requirePositive(radius, "cylinder radius");
-  requirePositive(height, "cylinder height");
+  require_positive_parameter(radius, "cylinder radius");
+  require_positive_parameter(height, "cylinder height");
   Shape3D s;
   s.kind_ = Kind::Cylinder;
   s.a_ = radius, s.c_ = 0.5 * height;
@@ -55,7 +64,7 @@ Shape3D Shape3D::cylinder(double radius, double height)
 
 Shape3D Shape3D::extrusion(const Polygon &section, double height)
 {
-  requirePositive(height, "extrusion height");
+  require_positive_parameter(height, "extrusion height");
   section.validate();
   Shape3D s;
   s.kind_ = Kind::Extrusion;
@@ -80,7 +89,7 @@ double Shape3D::volume() const
   return 0.0;
 }
 
-std::array<Vec3, 2> Shape3D::boundingBox() const
+std::array<Vec3, 2> Shape3D::bounding_box() const
 {
   switch (kind_) {
   case Kind::Sphere:
@@ -90,7 +99,7 @@ std::array<Vec3, 2> Shape3D::boundingBox() const
   case Kind::Cylinder:
     return {Vec3(-a_, -a_, -c_), Vec3(a_, a_, c_)};
   case Kind::Extrusion: {
-    const BoundingBox b = section_.boundingBox();
+    const BoundingBox b = section_.bounding_box();
     return {Vec3(b.lo.x, b.lo.y, -c_), Vec3(b.hi.x, b.hi.y, c_)};
   }
   }
@@ -100,7 +109,7 @@ std::array<Vec3, 2> Shape3D::boundingBox() const
 bool Shape3D::contains(const Vec3 &p, double tol) const
 {
   if (tol < 0.0) {
-    const auto bb = boundingBox();
+    const auto bb = bounding_box();
     tol = 1e-12 * std::sqrt((bb[1] - bb[0]).norm2());
   }
   const double az = std::fabs(p.z);
@@ -122,10 +131,10 @@ bool Shape3D::convex() const
   return kind_ != Kind::Extrusion || convexSection_;
 }
 
-Nodes3D latticeNodes3D(const Shape3D &s, double h, const Vec3 &off)
+Nodes3D lattice_nodes_3d(const Shape3D &s, double h, const Vec3 &off)
 {
-  requirePositive(h, "lattice spacing");
-  const auto bb = s.boundingBox();
+  require_positive_parameter(h, "lattice spacing");
+  const auto bb = s.bounding_box();
   auto range = [&](double lo, double hi, double o, long &i0, long &i1) {
     i0 = static_cast<long>(std::floor((lo - o) / h));
     i1 = static_cast<long>(std::ceil((hi - o) / h));
@@ -143,7 +152,7 @@ Nodes3D latticeNodes3D(const Shape3D &s, double h, const Vec3 &off)
     // exactly inside the polygon (needed by the exact bond test), and stack it.
     LatticeOptions lo;
     lo.offset = Vec2(off.x, off.y);
-    const Nodes2D layer = latticeNodes(s.section(), h, lo);
+    const Nodes2D layer = lattice_nodes(s.section(), h, lo);
     for (long k = k0; k <= k1; ++k) {
       const double z = off.z + k * h;
       if (std::fabs(z) > bb[1].z + tol) continue;
@@ -165,18 +174,18 @@ Nodes3D latticeNodes3D(const Shape3D &s, double h, const Vec3 &off)
   return n;
 }
 
-bool segmentInsideExact3D(const Shape3D &s, const Vec3 &p, const Vec3 &q)
+bool segment_inside_exact_3d(const Shape3D &s, const Vec3 &p, const Vec3 &q)
 {
   if (s.kind() != Shape3D::Kind::Extrusion) return s.contains(p) && s.contains(q);
-  const double hz = 0.5 * (s.boundingBox()[1].z - s.boundingBox()[0].z);
+  const double hz = 0.5 * (s.bounding_box()[1].z - s.bounding_box()[0].z);
   if (std::fabs(p.z) > hz || std::fabs(q.z) > hz) return false;
   // Prism = polygon x interval: (x,y,z)(t) in prism iff (x,y)(t) in polygon
   // and z(t) in the interval; z(t) is linear, so only the ends matter.
-  return segmentInsideExact(s.section(), xy(p), xy(q));
+  return segment_inside_exact(s.section(), xy(p), xy(q));
 }
 
-std::vector<Bond> createBonds3D(const Shape3D &s, const std::vector<Vec3> &x, double eps,
-                                Pruning pruning)
+std::vector<Bond> create_bonds_3d(const Shape3D &s, const std::vector<Vec3> &x, double eps,
+                                  Pruning pruning)
 {
   std::vector<double> c;
   c.reserve(3 * x.size());
@@ -185,7 +194,7 @@ std::vector<Bond> createBonds3D(const Shape3D &s, const std::vector<Vec3> &x, do
     c.push_back(p.y);
     c.push_back(p.z);
   }
-  std::vector<Bond> bonds = pairsWithinHorizon(c, 3, eps);
+  std::vector<Bond> bonds = pairs_within_horizon(c, 3, eps);
   if (pruning == Pruning::None || s.convex()) return bonds;
   const bool seed = pruning == Pruning::Seed;
   const SeedPruner pruner(s.section());
@@ -193,7 +202,7 @@ std::vector<Bond> createBonds3D(const Shape3D &s, const std::vector<Vec3> &x, do
                              [&](const Bond &b) {
                                const Vec3 &p = x[b.first], &q = x[b.second];
                                return seed ? !pruner.keeps(xy(p), xy(q))
-                                           : !segmentInsideExact3D(s, p, q);
+                                           : !segment_inside_exact_3d(s, p, q);
                              }),
               bonds.end());
   return bonds;

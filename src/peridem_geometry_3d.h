@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // 3D grains: spheres, boxes, cylinders and extruded polygons (with holes).
 //
 // Same pipeline as in 2D: point-in-shape, volume, a simple-cubic lattice of
@@ -43,7 +52,7 @@ class Shape3D {
   // Closed point-in-shape with tolerance tol (< 0: 1e-12 * size).
   bool contains(const Vec3 &p, double tol = -1.0) const;
   // Axis-aligned bounding box.
-  std::array<Vec3, 2> boundingBox() const;
+  std::array<Vec3, 2> bounding_box() const;
   // Cross-section polygon of an extrusion (empty polygon otherwise).
   const Polygon &section() const { return section_; }
   // True if the shape is convex (sphere, box, cylinder, convex extrusion).
@@ -63,16 +72,16 @@ struct Nodes3D {
 };
 
 // Simple-cubic lattice offset + (i, j, k) h clipped to the shape, volume h^3.
-Nodes3D latticeNodes3D(const Shape3D &s, double h, const Vec3 &offset = Vec3());
+Nodes3D lattice_nodes_3d(const Shape3D &s, double h, const Vec3 &offset = Vec3());
 
 // Exact visibility of a bond inside an extrusion (closed set); true for convex
 // shapes when both ends are inside.
-bool segmentInsideExact3D(const Shape3D &s, const Vec3 &p, const Vec3 &q);
+bool segment_inside_exact_3d(const Shape3D &s, const Vec3 &p, const Vec3 &q);
 
 // Bonds within the horizon (cell list), pruned for nonconvex extrusions with
 // the method of Bhattacharya & Lipton 2023, §5, on the projection (Seed) or the exact test (Exact).
-std::vector<Bond> createBonds3D(const Shape3D &s, const std::vector<Vec3> &x, double eps,
-                                Pruning pruning = Pruning::Seed);
+std::vector<Bond> create_bonds_3d(const Shape3D &s, const std::vector<Vec3> &x, double eps,
+                                  Pruning pruning = Pruning::Seed);
 
 } // namespace peridem
 

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Cell-list bond search, pruning and notch/crack bond removal.
 #include "peridem_geometry_bonds.h"
 #include "peridem_geometry_predicates.h"
@@ -10,9 +19,9 @@
 
 namespace peridem {
 
-std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, double eps)
+std::vector<Bond> pairs_within_horizon(const std::vector<double> &c, int dim, double eps)
 {
-  if (dim < 1 || dim > 3) throw GeometryError("pairsWithinHorizon: dim must be 1, 2 or 3");
+  if (dim < 1 || dim > 3) throw GeometryError("pairs_within_horizon: dim must be 1, 2 or 3");
   if (!(eps > 0.0) || !std::isfinite(eps)) throw GeometryError("horizon must be positive");
   const std::size_t n = c.size() / dim;
   std::vector<Bond> bonds;
@@ -26,7 +35,7 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, doub
   // points in the same or adjacent cells.
   const double cell = eps * (1.0 + 1e-9);
   constexpr std::int64_t kStride = std::int64_t(1) << 20; // cells per axis
-  auto cellOf = [&](std::size_t i, int d) {
+  auto cell_of = [&](std::size_t i, int d) {
     return static_cast<std::int64_t>(std::floor((c[i * dim + d] - lo[d]) / cell));
   };
   auto key = [&](const std::int64_t *ic) {
@@ -38,7 +47,7 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, doub
   for (std::size_t i = 0; i < n; ++i) {
     std::int64_t ic[3] = {0, 0, 0};
     for (int d = 0; d < dim; ++d) {
-      ic[d] = cellOf(i, d);
+      ic[d] = cell_of(i, d);
       if (ic[d] >= kStride - 1) throw GeometryError("horizon too small for the grain extent");
     }
     sorted[i] = {key(ic), static_cast<int>(i)};
@@ -47,7 +56,7 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, doub
   const int span = dim == 1 ? 3 : dim == 2 ? 9 : 27;
   for (std::size_t i = 0; i < n; ++i) {
     std::int64_t ic[3] = {0, 0, 0};
-    for (int d = 0; d < dim; ++d) ic[d] = cellOf(i, d);
+    for (int d = 0; d < dim; ++d) ic[d] = cell_of(i, d);
     for (int s = 0; s < span; ++s) {
       std::int64_t jc[3] = {0, 0, 0};
       bool valid = true;
@@ -66,7 +75,7 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, doub
           const double dx = c[j * dim + d] - c[i * dim + d];
           d2 += dx * dx;
         }
-        if (withinHorizon(d2, eps)) bonds.emplace_back(static_cast<int>(i), static_cast<int>(j));
+        if (within_horizon(d2, eps)) bonds.emplace_back(static_cast<int>(i), static_cast<int>(j));
       }
     }
   }
@@ -74,7 +83,7 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<double> &c, int dim, doub
   return bonds;
 }
 
-std::vector<Bond> pairsWithinHorizon(const std::vector<Vec2> &x, double eps)
+std::vector<Bond> pairs_within_horizon(const std::vector<Vec2> &x, double eps)
 {
   std::vector<double> c;
   c.reserve(2 * x.size());
@@ -82,13 +91,13 @@ std::vector<Bond> pairsWithinHorizon(const std::vector<Vec2> &x, double eps)
     c.push_back(p.x);
     c.push_back(p.y);
   }
-  return pairsWithinHorizon(c, 2, eps);
+  return pairs_within_horizon(c, 2, eps);
 }
 
-std::vector<Bond> createBonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
-                              Pruning pruning)
+std::vector<Bond> create_bonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
+                               Pruning pruning)
 {
-  std::vector<Bond> bonds = pairsWithinHorizon(x, eps);
+  std::vector<Bond> bonds = pairs_within_horizon(x, eps);
   if (pruning == Pruning::None) return bonds;
   if (pruning == Pruning::Seed) {
     const SeedPruner pruner(D);
@@ -98,15 +107,16 @@ std::vector<Bond> createBonds(const Polygon &D, const std::vector<Vec2> &x, doub
                        [&](const Bond &b) { return !pruner.keeps(x[b.first], x[b.second]); }),
         bonds.end());
   } else {
-    bonds.erase(std::remove_if(
-                    bonds.begin(), bonds.end(),
-                    [&](const Bond &b) { return !segmentInsideExact(D, x[b.first], x[b.second]); }),
+    bonds.erase(std::remove_if(bonds.begin(), bonds.end(),
+                               [&](const Bond &b) {
+                                 return !segment_inside_exact(D, x[b.first], x[b.second]);
+                               }),
                 bonds.end());
   }
   return bonds;
 }
 
-bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut)
+bool bond_crosses_cut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut)
 {
   // A node exactly on the cut's line counts as lying on its left (orient2d >= 0), as if
   // the cut were moved an infinitesimal distance to its right. With strict sides a notch
@@ -116,14 +126,14 @@ bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut)
   return left_i != left_j && orient2d(xi, xj, cut.a) * orient2d(xi, xj, cut.b) <= 0;
 }
 
-std::size_t removeBondsCrossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,
-                                const std::vector<CutSegment> &cuts)
+std::size_t remove_bonds_crossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,
+                                  const std::vector<CutSegment> &cuts)
 {
   const std::size_t before = bonds.size();
   bonds.erase(std::remove_if(bonds.begin(), bonds.end(),
                              [&](const Bond &b) {
                                for (const auto &cut : cuts)
-                                 if (bondCrossesCut(x.at(b.first), x.at(b.second), cut))
+                                 if (bond_crosses_cut(x.at(b.first), x.at(b.second), cut))
                                    return true;
                                return false;
                              }),

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Peridynamic bonds inside one grain: all node pairs within the horizon
 // (|xi| <= eps, i < j, each pair once), found with a cell list so the cost is
 // linear in the number of nodes, optionally pruned to the bonds whose segment
@@ -19,16 +28,16 @@ using Bond = std::pair<int, int>;
 
 // |xi|^2 <= eps^2 up to a relative 1e-10, so that lattice pairs exactly at
 // the horizon (e.g. eps = 3h along an axis) are kept despite round-off.
-inline bool withinHorizon(double dist2, double eps)
+inline bool within_horizon(double dist2, double eps)
 {
   return dist2 <= eps * eps * (1.0 + 1e-10);
 }
 
-// All pairs i < j with withinHorizon(|x_i - x_j|^2, eps), sorted. `coords` is
+// All pairs i < j with within_horizon(|x_i - x_j|^2, eps), sorted. `coords` is
 // n points of `dim` (1..3) consecutive doubles. Cell list with cell size eps:
 // O(n * neighbours), not O(n^2).
-std::vector<Bond> pairsWithinHorizon(const std::vector<double> &coords, int dim, double eps);
-std::vector<Bond> pairsWithinHorizon(const std::vector<Vec2> &x, double eps);
+std::vector<Bond> pairs_within_horizon(const std::vector<double> &coords, int dim, double eps);
+std::vector<Bond> pairs_within_horizon(const std::vector<Vec2> &x, double eps);
 
 enum class Pruning {
   None,  // keep every pair within the horizon (convex grains)
@@ -37,8 +46,8 @@ enum class Pruning {
 };
 
 // Bonds of one 2D grain D with nodes x (inside D) and horizon eps.
-std::vector<Bond> createBonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
-                              Pruning pruning = Pruning::Seed);
+std::vector<Bond> create_bonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
+                               Pruning pruning = Pruning::Seed);
 
 // A straight cut (pre-notch or crack) in reference coordinates.
 struct CutSegment {
@@ -50,13 +59,13 @@ struct CutSegment {
 // belongs to the left side of a -> b, so a cut along a node row separates the
 // row (kept with the left side) from the nodes right of it; bonds along the
 // line, and bonds from the row to the left side, are kept.
-bool bondCrossesCut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut);
+bool bond_crosses_cut(const Vec2 &xi, const Vec2 &xj, const CutSegment &cut);
 
 // Removes from `bonds` every bond crossing any cut; works on any bond list
 // with reference positions x (e.g. bonds read from a LAMMPS data file).
 // Returns the number of bonds removed.
-std::size_t removeBondsCrossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,
-                                const std::vector<CutSegment> &cuts);
+std::size_t remove_bonds_crossing(std::vector<Bond> &bonds, const std::vector<Vec2> &x,
+                                  const std::vector<CutSegment> &cuts);
 
 } // namespace peridem
 

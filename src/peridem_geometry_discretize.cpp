@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Lattice discretization of a 2D grain with h^2 or exactly clipped nodal
 // volumes (Bhattacharya & Lipton 2023, §6-7: uniform mesh size h).
 #include "peridem_geometry_discretize.h"
@@ -13,11 +22,11 @@ namespace {
 // Keeps the part of ring r on the side of an axis-aligned line where
 // sign * (coord - c) >= 0 (one Sutherland-Hodgman stage). The cut point gets
 // the line coordinate exactly so cells tile without gaps.
-Ring clipAxis(const Ring &r, bool useX, double c, double sign)
+Ring clip_axis(const Ring &r, bool use_x, double c, double sign)
 {
   Ring out;
   const std::size_t n = r.size();
-  auto coord = [&](const Vec2 &p) { return useX ? p.x : p.y; };
+  auto coord = [&](const Vec2 &p) { return use_x ? p.x : p.y; };
   auto inside = [&](const Vec2 &p) { return sign * (coord(p) - c) >= 0.0; };
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 &a = r[i], &b = r[(i + 1) % n];
@@ -26,7 +35,7 @@ Ring clipAxis(const Ring &r, bool useX, double c, double sign)
     if (ia != ib) {
       const double t = (c - coord(a)) / (coord(b) - coord(a));
       Vec2 p = a + (b - a) * t;
-      (useX ? p.x : p.y) = c;
+      (use_x ? p.x : p.y) = c;
       out.push_back(p);
     }
   }
@@ -34,16 +43,16 @@ Ring clipAxis(const Ring &r, bool useX, double c, double sign)
 }
 
 // Moves a point that is within round-off outside D onto the boundary and, if
-// needed, a few ulps inward, so that D.containsExact() holds. Returns false if
+// needed, a few ulps inward, so that D.contains_exact() holds. Returns false if
 // that fails (the point is then dropped).
-bool snapInside(const Polygon &D, Vec2 &p)
+bool snap_inside(const Polygon &D, Vec2 &p)
 {
   double best = std::numeric_limits<double>::infinity();
   Vec2 a, b;
-  for (std::size_t k = 0; k < D.numRings(); ++k) {
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
     const Ring &r = D.ring(k);
     for (std::size_t i = 0; i < r.size(); ++i) {
-      const double d = pointSegmentDistance(p, r[i], r[(i + 1) % r.size()]);
+      const double d = point_segment_distance(p, r[i], r[(i + 1) % r.size()]);
       if (d < best) best = d, a = r[i], b = r[(i + 1) % r.size()];
     }
   }
@@ -67,24 +76,24 @@ bool snapInside(const Polygon &D, Vec2 &p)
 
 } // namespace
 
-double clippedBoxArea(const Polygon &D, const Vec2 &lo, const Vec2 &hi)
+double clipped_box_area(const Polygon &D, const Vec2 &lo, const Vec2 &hi)
 {
   double area = 0.0;
-  for (std::size_t k = 0; k < D.numRings(); ++k) {
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
     Ring r = D.ring(k);
-    r = clipAxis(r, true, lo.x, 1.0);
-    if (!r.empty()) r = clipAxis(r, true, hi.x, -1.0);
-    if (!r.empty()) r = clipAxis(r, false, lo.y, 1.0);
-    if (!r.empty()) r = clipAxis(r, false, hi.y, -1.0);
-    if (r.size() >= 3) area += ringSignedArea(r); // CW holes: negative
+    r = clip_axis(r, true, lo.x, 1.0);
+    if (!r.empty()) r = clip_axis(r, true, hi.x, -1.0);
+    if (!r.empty()) r = clip_axis(r, false, lo.y, 1.0);
+    if (!r.empty()) r = clip_axis(r, false, hi.y, -1.0);
+    if (r.size() >= 3) area += ring_signed_area(r); // CW holes: negative
   }
   return area;
 }
 
-Nodes2D latticeNodes(const Polygon &D, double h, const LatticeOptions &opt)
+Nodes2D lattice_nodes(const Polygon &D, double h, const LatticeOptions &opt)
 {
   if (!(h > 0.0) || !std::isfinite(h)) throw GeometryError("lattice spacing must be positive");
-  const BoundingBox bb = D.boundingBox();
+  const BoundingBox bb = D.bounding_box();
   // One extra cell of margin so that ExactClip sees every cell touching D.
   const long i0 = static_cast<long>(std::floor((bb.lo.x - opt.offset.x) / h)) - 1;
   const long i1 = static_cast<long>(std::ceil((bb.hi.x - opt.offset.x) / h)) + 1;
@@ -102,15 +111,15 @@ Nodes2D latticeNodes(const Polygon &D, double h, const LatticeOptions &opt)
     for (long i = i0; i <= i1; ++i) {
       const Vec2 c = opt.offset + Vec2(i * h, j * h);
       const int loc = D.locate(c);
-      const double dist = (loc == 1 && !exact) ? h : D.boundaryDistance(c);
+      const double dist = (loc == 1 && !exact) ? h : D.boundary_distance(c);
       Vec2 p = c;
-      const bool keep = loc >= 0 || (dist <= tol && snapInside(D, p));
+      const bool keep = loc >= 0 || (dist <= tol && snap_inside(D, p));
       double vol = h * h;
       if (exact) {
         if (dist > reach)
           vol = (loc == 1) ? h * h : 0.0; // cell fully in/out
         else
-          vol = clippedBoxArea(D, c - Vec2(half, half), c + Vec2(half, half));
+          vol = clipped_box_area(D, c - Vec2(half, half), c + Vec2(half, half));
       }
       if (keep) {
         nodes.x.push_back(p);

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Discretization of a 2D grain into peridynamic nodes with nodal volumes.
 //
 // (a) Regular square lattice clipped to the shape (Bhattacharya & Lipton 2023, §6-7 use
@@ -39,15 +48,15 @@ struct LatticeOptions {
 // Square lattice of spacing h clipped to D. A lattice point is kept if it is
 // inside the closed shape up to 1e-9 h (so points meant to lie on the boundary
 // survive round-off); such a point that is exactly outside is moved onto/inside
-// the boundary by a few ulps, so every node satisfies D.containsExact().
+// the boundary by a few ulps, so every node satisfies D.contains_exact().
 // With ExactClip, the area of a cell whose centre is outside D is given to the
 // nearest node, so the volumes sum to |D|.
-Nodes2D latticeNodes(const Polygon &D, double h, const LatticeOptions &opt = {});
+Nodes2D lattice_nodes(const Polygon &D, double h, const LatticeOptions &opt = {});
 
 // Exact area of the axis-aligned box [lo, hi] intersected with D
 // (Sutherland-Hodgman clipping of every ring against the box; hole rings are
 // clockwise and subtract themselves).
-double clippedBoxArea(const Polygon &D, const Vec2 &lo, const Vec2 &hi);
+double clipped_box_area(const Polygon &D, const Vec2 &lo, const Vec2 &hi);
 
 // A 2D mesh as read from Gmsh: vertex coordinates (z dropped) and linear
 // elements, 0-based vertex indices.
@@ -62,15 +71,15 @@ struct Mesh2D {
 // (type 2) and 4-node quads (type 3); lines and points are ignored. Errors
 // (missing file, binary or other versions, malformed lines, unknown node tags,
 // higher-order elements, no 2D element) name the file and line.
-Mesh2D readGmshMesh(const std::string &path);
+Mesh2D read_gmsh_mesh(const std::string &path);
 // The same from a stream (e.g. a file read on one MPI rank and broadcast); `path` names it in
 // messages.
-Mesh2D parseGmshMesh(std::istream &in, const std::string &path);
+Mesh2D parse_gmsh_mesh(std::istream &in, const std::string &path);
 
 // Nodes at mesh vertices with volumes from eq. 31: each triangle gives |T|/3 to
 // each of its vertices, each quad the integrals of its bilinear shape
 // functions (2x2 Gauss, exact). Vertices used by no element are dropped.
-Nodes2D meshNodes(const Mesh2D &mesh);
+Nodes2D mesh_nodes(const Mesh2D &mesh);
 
 } // namespace peridem
 

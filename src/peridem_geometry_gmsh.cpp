@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Gmsh .msh import (ASCII 2.2 and 4.1) and nodal volumes from the P1/Q1
 // interpolation functions, Jha et al. 2021, §3.1 eq. 31.
 #include "peridem_geometry_discretize.h"
@@ -38,12 +47,12 @@ class MshReader {
     if (!next(tok)) fail(std::string("unexpected end of file, expected ") + what);
     return tok;
   }
-  long toLong(const std::string &s) const
+  long to_long(const std::string &s) const
   {
     return parse<long>(s, "an integer",
                        [](const std::string &t, std::size_t *pos) { return std::stol(t, pos); });
   }
-  double toDouble(const std::string &s) const
+  double to_double(const std::string &s) const
   {
     const double v = parse<double>(
         s, "a number", [](const std::string &t, std::size_t *pos) { return std::stod(t, pos); });
@@ -75,22 +84,22 @@ class MshReader {
 };
 
 struct MshData {
-  std::unordered_map<long, int> tagToIndex;
+  std::unordered_map<long, int> tag_to_index;
   Mesh2D mesh;
 };
 
-void addNode(MshReader &r, MshData &d, long tag, const std::vector<std::string> &xyz,
-             std::size_t first)
+void add_node(MshReader &r, MshData &d, long tag, const std::vector<std::string> &xyz,
+              std::size_t first)
 {
   r.need(xyz, first + 3, "a node (x y z)");
-  if (!d.tagToIndex.emplace(tag, static_cast<int>(d.mesh.vertices.size())).second)
+  if (!d.tag_to_index.emplace(tag, static_cast<int>(d.mesh.vertices.size())).second)
     r.fail("duplicate node tag " + std::to_string(tag));
-  d.mesh.vertices.emplace_back(r.toDouble(xyz[first]), r.toDouble(xyz[first + 1]));
+  d.mesh.vertices.emplace_back(r.to_double(xyz[first]), r.to_double(xyz[first + 1]));
 }
 
 // Adds an element of Gmsh type `type` whose node tags start at tok[first].
-void addElement(MshReader &r, MshData &d, long type, const std::vector<std::string> &tok,
-                std::size_t first)
+void add_element(MshReader &r, MshData &d, long type, const std::vector<std::string> &tok,
+                 std::size_t first)
 {
   if (type == 1 || type == 15) return; // lines and points: boundary tags only
   if (type != 2 && type != 3)
@@ -100,8 +109,8 @@ void addElement(MshReader &r, MshData &d, long type, const std::vector<std::stri
   r.need(tok, first + nn, "an element's node list");
   std::array<int, 4> v{};
   for (std::size_t k = 0; k < nn; ++k) {
-    const auto it = d.tagToIndex.find(r.toLong(tok[first + k]));
-    if (it == d.tagToIndex.end()) r.fail("element refers to unknown node " + tok[first + k]);
+    const auto it = d.tag_to_index.find(r.to_long(tok[first + k]));
+    if (it == d.tag_to_index.end()) r.fail("element refers to unknown node " + tok[first + k]);
     v[k] = it->second;
   }
   if (type == 2)
@@ -110,53 +119,53 @@ void addElement(MshReader &r, MshData &d, long type, const std::vector<std::stri
     d.mesh.quads.push_back(v);
 }
 
-void readNodes22(MshReader &r, MshData &d)
+void read_nodes22(MshReader &r, MshData &d)
 {
-  const long n = r.toLong(r.require("node count")[0]);
+  const long n = r.to_long(r.require("node count")[0]);
   for (long i = 0; i < n; ++i) {
     const auto tok = r.require("a node line");
     r.need(tok, 4, "a node line (tag x y z)");
-    addNode(r, d, r.toLong(tok[0]), tok, 1);
+    add_node(r, d, r.to_long(tok[0]), tok, 1);
   }
 }
 
-void readElements22(MshReader &r, MshData &d)
+void read_elements22(MshReader &r, MshData &d)
 {
-  const long n = r.toLong(r.require("element count")[0]);
+  const long n = r.to_long(r.require("element count")[0]);
   for (long i = 0; i < n; ++i) {
     const auto tok = r.require("an element line");
     r.need(tok, 3, "an element line (tag type ntags ...)");
-    const long ntags = r.toLong(tok[2]);
+    const long ntags = r.to_long(tok[2]);
     if (ntags < 0) r.fail("negative tag count");
-    addElement(r, d, r.toLong(tok[1]), tok, 3 + static_cast<std::size_t>(ntags));
+    add_element(r, d, r.to_long(tok[1]), tok, 3 + static_cast<std::size_t>(ntags));
   }
 }
 
-void readNodes41(MshReader &r, MshData &d)
+void read_nodes41(MshReader &r, MshData &d)
 {
   const auto head = r.require("node section header");
   r.need(head, 4, "the $Nodes header (numEntityBlocks numNodes minTag maxTag)");
-  const long blocks = r.toLong(head[0]);
+  const long blocks = r.to_long(head[0]);
   for (long b = 0; b < blocks; ++b) {
     const auto bh = r.require("a node block header");
     r.need(bh, 4, "a node block header (dim tag parametric numNodes)");
-    const long cnt = r.toLong(bh[3]);
+    const long cnt = r.to_long(bh[3]);
     std::vector<long> tags;
-    for (long i = 0; i < cnt; ++i) tags.push_back(r.toLong(r.require("a node tag")[0]));
-    for (long i = 0; i < cnt; ++i) addNode(r, d, tags[i], r.require("node coordinates"), 0);
+    for (long i = 0; i < cnt; ++i) tags.push_back(r.to_long(r.require("a node tag")[0]));
+    for (long i = 0; i < cnt; ++i) add_node(r, d, tags[i], r.require("node coordinates"), 0);
   }
 }
 
-void readElements41(MshReader &r, MshData &d)
+void read_elements41(MshReader &r, MshData &d)
 {
   const auto head = r.require("element section header");
   r.need(head, 4, "the $Elements header (numEntityBlocks numElements minTag maxTag)");
-  const long blocks = r.toLong(head[0]);
+  const long blocks = r.to_long(head[0]);
   for (long b = 0; b < blocks; ++b) {
     const auto bh = r.require("an element block header");
     r.need(bh, 4, "an element block header (dim tag type numElements)");
-    const long type = r.toLong(bh[2]), cnt = r.toLong(bh[3]);
-    for (long i = 0; i < cnt; ++i) addElement(r, d, type, r.require("an element line"), 1);
+    const long type = r.to_long(bh[2]), cnt = r.to_long(bh[3]);
+    for (long i = 0; i < cnt; ++i) add_element(r, d, type, r.require("an element line"), 1);
   }
 }
 
@@ -172,19 +181,19 @@ double Mesh2D::area() const
   return a;
 }
 
-Mesh2D readGmshMesh(const std::string &path)
+Mesh2D read_gmsh_mesh(const std::string &path)
 {
   std::ifstream in(path);
   if (!in) throw GeometryError("cannot open Gmsh file '" + path + "'");
-  return parseGmshMesh(in, path);
+  return parse_gmsh_mesh(in, path);
 }
 
-Mesh2D parseGmshMesh(std::istream &in, const std::string &path)
+Mesh2D parse_gmsh_mesh(std::istream &in, const std::string &path)
 {
   MshReader r(in, path);
   MshData d;
   std::string version;
-  bool haveNodes = false;
+  bool have_nodes = false;
   std::vector<std::string> tok;
   while (r.next(tok)) {
     const std::string sec = tok[0];
@@ -201,11 +210,11 @@ Mesh2D parseGmshMesh(std::istream &in, const std::string &path)
       if (version.empty()) r.fail(sec + " before $MeshFormat");
       const bool v2 = version == "2.2";
       if (sec == "$Nodes") {
-        v2 ? readNodes22(r, d) : readNodes41(r, d);
-        haveNodes = true;
+        v2 ? read_nodes22(r, d) : read_nodes41(r, d);
+        have_nodes = true;
       } else {
-        if (!haveNodes) r.fail("$Elements before $Nodes");
-        v2 ? readElements22(r, d) : readElements41(r, d);
+        if (!have_nodes) r.fail("$Elements before $Nodes");
+        v2 ? read_elements22(r, d) : read_elements41(r, d);
       }
     }
     // Skip to the end of this section (also skips $PhysicalNames, $Entities...).
@@ -223,7 +232,7 @@ Mesh2D parseGmshMesh(std::istream &in, const std::string &path)
   return d.mesh;
 }
 
-Nodes2D meshNodes(const Mesh2D &m)
+Nodes2D mesh_nodes(const Mesh2D &m)
 {
   std::vector<double> vol(m.vertices.size(), 0.0);
   // eq. 31 with P1 functions: int_T phi_i = |T| / 3 for each vertex of T.

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // One-call grain construction for the LAMMPS commands: shape + spacing +
 // horizon -> nodes (reference positions, volumes) and bonds, with the input
 // checks ("spacing larger than the grain", "horizon smaller than
@@ -33,21 +42,21 @@ struct Grain3D {
 };
 
 // Lattice grain of an arbitrary (validated) polygon.
-Grain2D discretizeGrain(const Polygon &shape, double h, double eps, const GrainOptions &opt = {});
-// Built-in shape by name (see builtinShapes()).
-Grain2D discretizeShape(const std::string &name, const std::map<std::string, double> &params,
-                        double h, double eps, const GrainOptions &opt = {});
+Grain2D discretize_grain(const Polygon &shape, double h, double eps, const GrainOptions &opt = {});
+// Built-in shape by name (see builtin_shapes()).
+Grain2D discretize_shape(const std::string &name, const std::map<std::string, double> &params,
+                         double h, double eps, const GrainOptions &opt = {});
 // User polygon file (doc/peridem_polygon_format.rst).
-Grain2D discretizePolygonFile(const std::string &path, double h, double eps,
-                              const GrainOptions &opt = {});
+Grain2D discretize_polygon_file(const std::string &path, double h, double eps,
+                                const GrainOptions &opt = {});
 // Gmsh mesh grain: nodes/volumes from eq. 31. Bonds are pruned against
 // `shape` if given (mesh of a nonconvex polygon), else not pruned. The
 // horizon must not be smaller than the shortest mesh edge.
-Grain2D meshGrain(const Mesh2D &mesh, double eps, const Polygon *shape = nullptr,
-                  const std::vector<CutSegment> &cuts = {});
+Grain2D mesh_grain(const Mesh2D &mesh, double eps, const Polygon *shape = nullptr,
+                   const std::vector<CutSegment> &cuts = {});
 // 3D lattice grain.
-Grain3D discretizeGrain3D(const Shape3D &shape, double h, double eps,
-                          Pruning pruning = Pruning::Seed, const Vec3 &offset = Vec3());
+Grain3D discretize_grain_3d(const Shape3D &shape, double h, double eps,
+                            Pruning pruning = Pruning::Seed, const Vec3 &offset = Vec3());
 
 } // namespace peridem
 

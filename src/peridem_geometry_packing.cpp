@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Jammed polydisperse disk/sphere packings (Bhattacharya & Lipton 2023, §7-7.1); see the
 // header for the method and its references.
 #include "peridem_geometry_packing.h"
@@ -21,14 +30,14 @@ std::string str(double v)
   return s.str();
 }
 
-double ballVolume(double r, int dim)
+double ball_volume(double r, int dim)
 {
   return dim == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
 }
 
 /* Cell grid over [lo, hi] (cells of side >= `size`; points outside are put in
    the border cells). Cells are sorted by a counting sort, so building is O(N).
-   forEachPair visits each unordered pair of points in the same or adjacent
+   for_each_pair visits each unordered pair of points in the same or adjacent
    cells once (half stencil). */
 class CellGrid {
  public:
@@ -44,23 +53,23 @@ class CellGrid {
   void build(const std::vector<std::array<double, 3>> &x)
   {
     const std::size_t np = x.size();
-    cellOf.resize(np);
+    cell_of.resize(np);
     start.assign(static_cast<std::size_t>(n[0]) * n[1] * n[2] + 1, 0);
     for (std::size_t i = 0; i < np; i++) {
       int c[3] = {0, 0, 0};
       for (int d = 0; d < dim; d++)
         c[d] = std::min(n[d] - 1, std::max(0, static_cast<int>((x[i][d] - base[d]) * inv[d])));
-      cellOf[i] = (static_cast<std::size_t>(c[2]) * n[1] + c[1]) * n[0] + c[0];
-      start[cellOf[i] + 1]++;
+      cell_of[i] = (static_cast<std::size_t>(c[2]) * n[1] + c[1]) * n[0] + c[0];
+      start[cell_of[i] + 1]++;
     }
     for (std::size_t c = 1; c < start.size(); c++) start[c] += start[c - 1];
     order.resize(np);
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < np; i++) order[fill[cellOf[i]]++] = i;
+    for (std::size_t i = 0; i < np; i++) order[fill[cell_of[i]]++] = i;
   }
   // point indices sorted by cell (after build)
   const std::vector<std::size_t> &sorted() const { return order; }
-  template <class F> void forEachPair(F &&f) const
+  template <class F> void for_each_pair(F &&f) const
   {
     // half stencil: the cell itself (j > i) and the neighbours "after" it
     static const int off2[4][3] = {{1, 0, 0}, {-1, 1, 0}, {0, 1, 0}, {1, 1, 0}};
@@ -89,7 +98,7 @@ class CellGrid {
   int dim;
   int n[3];
   double base[3], inv[3];
-  std::vector<std::size_t> cellOf, start, order;
+  std::vector<std::size_t> cell_of, start, order;
 };
 
 } // namespace
@@ -159,7 +168,7 @@ double PackingRandom::normal()
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
 }
 
-std::vector<double> drawRadii(const RadiusDistribution &dist, std::size_t n, std::uint64_t seed)
+std::vector<double> draw_radii(const RadiusDistribution &dist, std::size_t n, std::uint64_t seed)
 {
   dist.validate();
   PackingRandom rng(seed);
@@ -188,7 +197,7 @@ std::vector<double> drawRadii(const RadiusDistribution &dist, std::size_t n, std
   return r;
 }
 
-/* FIRE + barostat state of packSpheres (lengths in mean radii) */
+/* FIRE + barostat state of pack_spheres (lengths in mean radii) */
 struct Minimiser {
   double lo[3], hi[3];
   double H, alpha, amax, area;
@@ -239,7 +248,7 @@ struct Minimiser {
       std::vector<std::size_t> rank(N);
       for (std::size_t k = 0; k < N; k++) rank[order[k]] = k;
       pairs.clear();
-      grid.forEachPair([&](std::size_t i0, std::size_t j0) {
+      grid.for_each_pair([&](std::size_t i0, std::size_t j0) {
         const std::size_t i = rank[i0], j = rank[j0];
         double d2 = 0.0;
         for (int d = 0; d < D; d++)
@@ -390,7 +399,7 @@ struct Minimiser {
    radii r_i then do not overlap and touching ones have gaps below tau r.
 ------------------------------------------------------------------------- */
 
-Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
+Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt)
 {
   const int D = opt.dimension;
   if (D != 2 && D != 3) throw GeometryError("packing dimension must be 2 or 3");
@@ -404,7 +413,7 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
     if (!(r > 0.0)) throw GeometryError("disk radius " + str(r) + " must be > 0");
     rmax = std::max(rmax, r);
     rsum += r;
-    volume += ballVolume(r, D);
+    volume += ball_volume(r, D);
   }
   const double alpha = 0.5 * opt.tolerance;
   for (int d = 0; d < D; d++)
@@ -438,7 +447,7 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
   double area = base / std::pow(L, D - 1);
 
   // random loose start at packing fraction 0.5 (the overlaps are pushed apart first)
-  // a stream of its own: drawRadii with the same seed must not correlate radii and positions
+  // a stream of its own: draw_radii with the same seed must not correlate radii and positions
   std::uint64_t z = opt.seed + 0x9e3779b97f4a7c15ULL; // splitmix64 finaliser
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
@@ -495,7 +504,7 @@ Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt)
 
 /* ---------------------------------------------------------------------- */
 
-double fractionInside(const Packing &p, const double *lo, const double *hi, int samples)
+double fraction_inside(const Packing &p, const double *lo, const double *hi, int samples)
 {
   const int D = p.dimension;
   double rmax = 0.0;
@@ -549,7 +558,7 @@ double fractionInside(const Packing &p, const double *lo, const double *hi, int 
   return static_cast<double>(hit) / total;
 }
 
-GapReport smallestGaps(const Packing &p)
+GapReport smallest_gaps(const Packing &p)
 {
   const int D = p.dimension;
   GapReport g;
@@ -558,7 +567,7 @@ GapReport smallestGaps(const Packing &p)
   for (double r : p.radius) rmax = std::max(rmax, r);
   CellGrid grid(D, p.lo, p.hi, 2.0 * rmax);
   grid.build(p.centre);
-  grid.forEachPair([&](std::size_t i, std::size_t j) {
+  grid.for_each_pair([&](std::size_t i, std::size_t j) {
     double d2 = 0.0;
     for (int d = 0; d < D; d++)
       d2 += (p.centre[i][d] - p.centre[j][d]) * (p.centre[i][d] - p.centre[j][d]);
@@ -580,7 +589,7 @@ GapReport smallestGaps(const Packing &p)
   return g;
 }
 
-bool directionsBlockEveryMove(const std::vector<std::array<double, 3>> &n, int dimension)
+bool directions_block_every_move(const std::vector<std::array<double, 3>> &n, int dimension)
 {
   const std::size_t k = n.size();
   if (k < static_cast<std::size_t>(dimension + 1)) return false;
@@ -621,7 +630,7 @@ bool directionsBlockEveryMove(const std::vector<std::array<double, 3>> &n, int d
   return independent;
 }
 
-JammingReport jammingReport(const Packing &p, double tolerance)
+JammingReport jamming_report(const Packing &p, double tolerance)
 {
   const int D = p.dimension;
   const std::size_t N = p.centre.size();
@@ -630,7 +639,7 @@ JammingReport jammingReport(const Packing &p, double tolerance)
   for (double r : p.radius) rmax = std::max(rmax, r);
   CellGrid grid(D, p.lo, p.hi, 2.0 * rmax * (1.0 + tolerance));
   grid.build(p.centre);
-  grid.forEachPair([&](std::size_t i, std::size_t j) {
+  grid.for_each_pair([&](std::size_t i, std::size_t j) {
     std::array<double, 3> u = {0, 0, 0};
     double d2 = 0.0;
     for (int d = 0; d < D; d++) {
@@ -658,7 +667,7 @@ JammingReport jammingReport(const Packing &p, double tolerance)
         dirs[i].push_back(u);
       }
     }
-    if (directionsBlockEveryMove(dirs[i], D)) {
+    if (directions_block_every_move(dirs[i], D)) {
       rep.jammed++;
       contacts += dirs[i].size();
     } else {
@@ -686,7 +695,7 @@ namespace {
 // Shortest vector of the convex hull of the unit vectors n (Wolfe's
 // optimality test: v is it iff v . n_k >= v . v for all k), by trying the
 // affine hulls of subsets of 1 to D + 1 vectors; a few vectors only.
-std::array<double, 3> shortestInHull(const std::vector<std::array<double, 3>> &n, int D)
+std::array<double, 3> shortest_in_hull(const std::vector<std::array<double, 3>> &n, int D)
 {
   const std::size_t k = n.size();
   std::array<double, 3> best = {0, 0, 0};
@@ -756,12 +765,12 @@ std::array<double, 3> shortestInHull(const std::vector<std::array<double, 3>> &n
 }
 } // namespace
 
-RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_passes)
+RattlerGrowth grow_rattlers(Packing &p, double cap, double tolerance, int max_passes)
 {
   const int D = p.dimension;
   const std::size_t N = p.centre.size();
   RattlerGrowth out;
-  JammingReport rep = jammingReport(p, tolerance);
+  JammingReport rep = jamming_report(p, tolerance);
   out.before = rep.rattlers;
   double rmax = 0.0;
   for (double r : p.radius) rmax = std::max(rmax, r);
@@ -847,7 +856,7 @@ RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_pas
         act.clear();
         for (std::size_t j = 0; j < g.size(); j++)
           if (g[j] <= f + eps) act.push_back(nrm[j]);
-        const std::array<double, 3> v = shortestInHull(act, D);
+        const std::array<double, 3> v = shortest_in_hull(act, D);
         const double vn = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         if (vn < 1e-9) {
           eps *= 0.25;
@@ -883,7 +892,7 @@ RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_pas
       }
     }
     const std::size_t last = rep.rattlers;
-    rep = jammingReport(p, tolerance);
+    rep = jamming_report(p, tolerance);
     if (!changed || rep.rattlers >= last) {
       out.passes++;
       break;
@@ -895,7 +904,7 @@ RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_pas
     if (p.radius[i] >= cap * (1.0 - 1e-9)) out.capped++;
   // the bed's packing fraction with the new radii
   double vol = 0.0, box = 1.0;
-  for (double r : p.radius) vol += ballVolume(r, D);
+  for (double r : p.radius) vol += ball_volume(r, D);
   for (int d = 0; d < D; d++) box *= p.hi[d] - p.lo[d];
   p.fraction = vol / box;
   return out;
@@ -903,7 +912,7 @@ RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_pas
 
 /* ---------------------------------------------------------------------- */
 
-Packing rowPacking(const RadiusDistribution &dist, const RowOptions &opt)
+Packing row_packing(const RadiusDistribution &dist, const RowOptions &opt)
 {
   if (opt.dimension != 2) throw GeometryError("row layout is 2d only");
   dist.validate();
@@ -919,8 +928,8 @@ Packing rowPacking(const RadiusDistribution &dist, const RowOptions &opt)
   std::size_t nmax = static_cast<std::size_t>((W / (2.0 * rmin + opt.gap) + 1.0) *
                                               (H / (2.0 * rmin + opt.gap) + 1.0));
   if (opt.max_count > 0) nmax = std::min(nmax, opt.max_count);
-  const std::vector<double> radii = drawRadii(dist, nmax, opt.seed);
-  // the spacings from a stream of their own (see packSpheres)
+  const std::vector<double> radii = draw_radii(dist, nmax, opt.seed);
+  // the spacings from a stream of their own (see pack_spheres)
   std::uint64_t z = opt.seed + 0x7f4a7c159e3779b9ULL;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
@@ -956,14 +965,14 @@ Packing rowPacking(const RadiusDistribution &dist, const RowOptions &opt)
     floor = top;
   }
   double area = 0.0;
-  for (double r : out.radius) area += ballVolume(r, 2);
+  for (double r : out.radius) area += ball_volume(r, 2);
   out.fraction = area / (W * H);
   return out;
 }
 
 /* ---------------------------------------------------------------------- */
 
-EnclosingCircle smallestEnclosingCircle(const std::vector<std::array<double, 2>> &points)
+EnclosingCircle smallest_enclosing_circle(const std::vector<std::array<double, 2>> &points)
 {
   // Welzl (1991), iterative form; points shuffled with a fixed seed so the
   // expected time is linear and the result reproducible.

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Jammed polydisperse disk (2D) and sphere (3D) packings of a rectangular
 // container: the "security disks" of Bhattacharya & Lipton 2023, §7-7.1.
 //
@@ -10,7 +19,7 @@
 // minimisation of soft disks under a vertical pressure (the jamming protocol
 // of O'Hern, Silbert, Liu and Nagel, PRE 68, 011306 (2003), with the FIRE
 // minimiser of Bitzek et al., PRL 97, 170201 (2006), and an affine
-// Berendsen-type barostat on the bed height); see packSpheres().
+// Berendsen-type barostat on the bed height); see pack_spheres().
 #ifndef PERIDEM_GEOMETRY_PACKING_H
 #define PERIDEM_GEOMETRY_PACKING_H
 
@@ -45,7 +54,7 @@ struct RadiusDistribution {
 
 // n radii, reproducible on every platform for a given seed (own 64-bit
 // uniform and Box-Muller normal, not the implementation-defined std ones).
-std::vector<double> drawRadii(const RadiusDistribution &dist, std::size_t n, std::uint64_t seed);
+std::vector<double> draw_radii(const RadiusDistribution &dist, std::size_t n, std::uint64_t seed);
 
 // std::mt19937_64 (its output is fixed by the C++ standard) with its own
 // uniform and normal, so that a seed gives the same numbers everywhere.
@@ -82,7 +91,7 @@ struct Packing {
 // grid gives Verlet lists. Throws GeometryError if the container cannot hold
 // the disks (a disk wider than the container, or the jammed bed higher than
 // the container) or if the minimisation does not converge.
-Packing packSpheres(const std::vector<double> &radii, const PackingOptions &opt);
+Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt);
 
 // Smallest gap (distance minus radii) over all disk pairs and all walls of box
 // lo/hi (negative: overlap or wall crossing); exact, cell grid.
@@ -90,12 +99,12 @@ struct GapReport {
   double pair = 0.0, wall = 0.0; // smallest pair gap, smallest wall gap
   std::size_t pair_i = 0, pair_j = 0, wall_i = 0;
 };
-GapReport smallestGaps(const Packing &p);
+GapReport smallest_gaps(const Packing &p);
 
 // Fraction of the box lo/hi covered by disks, by the midpoint rule on
 // samples^D points: the bulk fraction, away from the wall layers, where
 // packings are looser (walls order the first layer).
-double fractionInside(const Packing &p, const double *lo, const double *hi, int samples);
+double fraction_inside(const Packing &p, const double *lo, const double *hi, int samples);
 
 // Local jamming (Bhattacharya & Lipton 2023, Definition 7.1 applied to one disk, the others fixed):
 // disk i cannot move iff the unit directions to its contacts (disks with gap
@@ -103,13 +112,13 @@ double fractionInside(const Packing &p, const double *lo, const double *hi, int 
 // (half-space in 3D), i.e. every displacement u has u . n_k > 0 for some k.
 // Disks that fail are "rattlers": caged in a hole of the jammed backbone,
 // they carry no load; jammed packings always have a few (O'Hern et al. 2003).
-bool directionsBlockEveryMove(const std::vector<std::array<double, 3>> &dirs, int dimension);
+bool directions_block_every_move(const std::vector<std::array<double, 3>> &dirs, int dimension);
 struct JammingReport {
   std::size_t jammed = 0, rattlers = 0;
   double mean_contacts = 0.0; // contacts per backbone disk (walls included)
   std::vector<std::size_t> rattler_index;
 };
-JammingReport jammingReport(const Packing &p, double tolerance);
+JammingReport jamming_report(const Packing &p, double tolerance);
 
 // Rattler growth: Bhattacharya & Lipton (2023) §7.1 step 4 in spirit (each nodal circle gets the
 // largest radius its neighbours and the walls allow, centre free). Each
@@ -128,7 +137,7 @@ struct RattlerGrowth {
   int passes = 0;
   std::vector<std::size_t> remaining; // rattler indices left
 };
-RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_passes = 8);
+RattlerGrowth grow_rattlers(Packing &p, double cap, double tolerance, int max_passes = 8);
 
 // Perturbed-row bed of Jha, Desai, Bhattacharya and
 // Lipton (2021, §4.4 and Fig. 22): disks in rows on a "uniform grid", each
@@ -140,7 +149,7 @@ RattlerGrowth growRattlers(Packing &p, double cap, double tolerance, int max_pas
 // x shift of the paper; never less than gap, so nothing overlaps); a row
 // starts gap above the highest disk of the row below and gap from the wall;
 // a row ends with the first disk that does not fit. Radii are drawn in order
-// from drawRadii(dist, max_count, seed); at most max_count disks.
+// from draw_radii(dist, max_count, seed); at most max_count disks.
 struct RowOptions {
   int dimension = 2; // 2 only
   double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -149,14 +158,14 @@ struct RowOptions {
   std::uint64_t seed = 1;
   std::size_t max_count = 0; // 0: as many as fit
 };
-Packing rowPacking(const RadiusDistribution &dist, const RowOptions &opt);
+Packing row_packing(const RadiusDistribution &dist, const RowOptions &opt);
 
 // Smallest circle enclosing the points (Welzl's algorithm, expected linear):
 // the security disk of a 2D grain shape.
 struct EnclosingCircle {
   double x = 0.0, y = 0.0, r = 0.0;
 };
-EnclosingCircle smallestEnclosingCircle(const std::vector<std::array<double, 2>> &points);
+EnclosingCircle smallest_enclosing_circle(const std::vector<std::array<double, 2>> &points);
 
 } // namespace peridem
 

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Polygon-with-holes geometry: area, centroid, point location, transforms and
 // validity checks for grain shapes (Bhattacharya & Lipton 2023, §5, §7.2).
 #include "peridem_geometry_polygon.h"
@@ -11,20 +20,20 @@ namespace peridem {
 
 namespace {
 
-std::string fmtPoint(const Vec2 &p)
+std::string fmt_point(const Vec2 &p)
 {
   char buf[96];
   std::snprintf(buf, sizeof(buf), "(%.9g, %.9g)", p.x, p.y);
   return buf;
 }
 
-std::string ringName(std::size_t k)
+std::string ring_name(std::size_t k)
 {
   return k == 0 ? std::string("outer ring") : "hole " + std::to_string(k);
 }
 
 // Drops a closing vertex equal to the first one and consecutive duplicates.
-Ring cleanRing(Ring r)
+Ring clean_ring(Ring r)
 {
   Ring out;
   for (const Vec2 &p : r)
@@ -35,13 +44,13 @@ Ring cleanRing(Ring r)
 
 // Exact closed point-in-ring: +1 inside, 0 on the boundary, -1 outside.
 // Crossing-number rule along +x, evaluated with the exact orient2d.
-int locateInRing(const Ring &r, const Vec2 &p)
+int locate_in_ring(const Ring &r, const Vec2 &p)
 {
   bool inside = false;
   const std::size_t n = r.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 &a = r[i], &b = r[(i + 1) % n];
-    if (onSegment(a, b, p)) return 0;
+    if (on_segment(a, b, p)) return 0;
     if ((a.y <= p.y) != (b.y <= p.y)) {
       // Edge straddles the horizontal line through p: crossing to the right of
       // p iff p is left of the upward-directed edge.
@@ -53,7 +62,7 @@ int locateInRing(const Ring &r, const Vec2 &p)
 }
 
 // First self-intersection of ring r, as a message, or "".
-std::string ringSelfIntersection(const Ring &r, std::size_t k)
+std::string ring_self_intersection(const Ring &r, std::size_t k)
 {
   const std::size_t n = r.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -70,36 +79,36 @@ std::string ringSelfIntersection(const Ring &r, std::size_t k)
         const Vec2 &e2 = (j == i + 1) ? d : c;
         bad = orient2d(e1, shared, e2) == 0 && dot(e1 - shared, e2 - shared) > 0.0;
       } else {
-        bad = segmentsIntersectClosed(a, b, c, d);
+        bad = segments_intersect_closed(a, b, c, d);
       }
       if (bad)
-        return "polygon " + ringName(k) + " is self-intersecting: edge " + fmtPoint(a) + "-" +
-               fmtPoint(b) + " meets edge " + fmtPoint(c) + "-" + fmtPoint(d);
+        return "polygon " + ring_name(k) + " is self-intersecting: edge " + fmt_point(a) + "-" +
+               fmt_point(b) + " meets edge " + fmt_point(c) + "-" + fmt_point(d);
     }
   }
   return "";
 }
 
 // True if any edge of ring r meets any edge of ring s (closed segments).
-bool ringsTouch(const Ring &r, const Ring &s)
+bool rings_touch(const Ring &r, const Ring &s)
 {
   for (std::size_t i = 0; i < r.size(); ++i)
     for (std::size_t j = 0; j < s.size(); ++j)
-      if (segmentsIntersectClosed(r[i], r[(i + 1) % r.size()], s[j], s[(j + 1) % s.size()]))
+      if (segments_intersect_closed(r[i], r[(i + 1) % r.size()], s[j], s[(j + 1) % s.size()]))
         return true;
   return false;
 }
 
 } // namespace
 
-double ringSignedArea(const Ring &r)
+double ring_signed_area(const Ring &r)
 {
   double a = 0.0;
   for (std::size_t i = 0, n = r.size(); i < n; ++i) a += cross(r[i], r[(i + 1) % n]);
   return 0.5 * a;
 }
 
-double pointSegmentDistance(const Vec2 &p, const Vec2 &a, const Vec2 &b)
+double point_segment_distance(const Vec2 &p, const Vec2 &a, const Vec2 &b)
 {
   const Vec2 ab = b - a;
   const double l2 = ab.norm2();
@@ -108,17 +117,17 @@ double pointSegmentDistance(const Vec2 &p, const Vec2 &a, const Vec2 &b)
   return (p - (a + ab * t)).norm();
 }
 
-Polygon::Polygon(Ring outer, std::vector<Ring> holes) : outer_(cleanRing(std::move(outer)))
+Polygon::Polygon(Ring outer, std::vector<Ring> holes) : outer_(clean_ring(std::move(outer)))
 {
-  if (ringSignedArea(outer_) < 0.0) std::reverse(outer_.begin(), outer_.end());
+  if (ring_signed_area(outer_) < 0.0) std::reverse(outer_.begin(), outer_.end());
   for (auto &h : holes) {
-    Ring c = cleanRing(std::move(h));
-    if (ringSignedArea(c) > 0.0) std::reverse(c.begin(), c.end());
+    Ring c = clean_ring(std::move(h));
+    if (ring_signed_area(c) > 0.0) std::reverse(c.begin(), c.end());
     holes_.push_back(std::move(c));
   }
 }
 
-std::size_t Polygon::numVertices() const
+std::size_t Polygon::num_vertices() const
 {
   std::size_t n = outer_.size();
   for (const auto &h : holes_) n += h.size();
@@ -128,8 +137,8 @@ std::size_t Polygon::numVertices() const
 double Polygon::area() const
 {
   // Holes are CW, so their signed areas are negative and subtract themselves.
-  double a = ringSignedArea(outer_);
-  for (const auto &h : holes_) a += ringSignedArea(h);
+  double a = ring_signed_area(outer_);
+  for (const auto &h : holes_) a += ring_signed_area(h);
   return a;
 }
 
@@ -137,7 +146,7 @@ Vec2 Polygon::centroid() const
 {
   // Standard polygon centroid, summed over all rings with their signed areas.
   double a = 0.0, cx = 0.0, cy = 0.0;
-  for (std::size_t k = 0; k < numRings(); ++k) {
+  for (std::size_t k = 0; k < num_rings(); ++k) {
     const Ring &r = ring(k);
     for (std::size_t i = 0, n = r.size(); i < n; ++i) {
       const Vec2 &p = r[i], &q = r[(i + 1) % n];
@@ -150,7 +159,7 @@ Vec2 Polygon::centroid() const
   return {cx / (3.0 * a), cy / (3.0 * a)};
 }
 
-BoundingBox Polygon::boundingBox() const
+BoundingBox Polygon::bounding_box() const
 {
   BoundingBox b;
   const double inf = std::numeric_limits<double>::infinity();
@@ -163,55 +172,55 @@ BoundingBox Polygon::boundingBox() const
   return b;
 }
 
-double Polygon::maxRadius() const
+double Polygon::max_radius() const
 {
   double r = 0.0;
   for (const Vec2 &p : outer_) r = std::max(r, p.norm());
   return r;
 }
 
-double Polygon::boundaryDistance(const Vec2 &p) const
+double Polygon::boundary_distance(const Vec2 &p) const
 {
   double d = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < numRings(); ++k) {
+  for (std::size_t k = 0; k < num_rings(); ++k) {
     const Ring &r = ring(k);
     for (std::size_t i = 0, n = r.size(); i < n; ++i)
-      d = std::min(d, pointSegmentDistance(p, r[i], r[(i + 1) % n]));
+      d = std::min(d, point_segment_distance(p, r[i], r[(i + 1) % n]));
   }
   return d;
 }
 
-double Polygon::defaultTolerance() const
+double Polygon::default_tolerance() const
 {
-  return 1e-12 * boundingBox().diagonal();
+  return 1e-12 * bounding_box().diagonal();
 }
 
 int Polygon::locate(const Vec2 &p) const
 {
-  const int o = locateInRing(outer_, p);
+  const int o = locate_in_ring(outer_, p);
   if (o <= 0) return o;
   for (const auto &h : holes_) {
-    const int l = locateInRing(h, p);
+    const int l = locate_in_ring(h, p);
     if (l >= 0) return -l; // inside a hole: exterior; on its ring: boundary
   }
   return 1;
 }
 
-bool Polygon::containsExact(const Vec2 &p) const
+bool Polygon::contains_exact(const Vec2 &p) const
 {
   return locate(p) >= 0;
 }
 
 bool Polygon::contains(const Vec2 &p, double tol) const
 {
-  if (containsExact(p)) return true;
-  if (tol < 0.0) tol = defaultTolerance();
-  return tol > 0.0 && boundaryDistance(p) <= tol;
+  if (contains_exact(p)) return true;
+  if (tol < 0.0) tol = default_tolerance();
+  return tol > 0.0 && boundary_distance(p) <= tol;
 }
 
 Polygon &Polygon::translate(const Vec2 &d)
 {
-  for (std::size_t k = 0; k < numRings(); ++k)
+  for (std::size_t k = 0; k < num_rings(); ++k)
     for (Vec2 &p : (k == 0 ? outer_ : holes_[k - 1])) p = p + d;
   return *this;
 }
@@ -219,7 +228,7 @@ Polygon &Polygon::translate(const Vec2 &d)
 Polygon &Polygon::rotate(double angle, const Vec2 &c)
 {
   const double cs = std::cos(angle), sn = std::sin(angle);
-  for (std::size_t k = 0; k < numRings(); ++k)
+  for (std::size_t k = 0; k < num_rings(); ++k)
     for (Vec2 &p : (k == 0 ? outer_ : holes_[k - 1])) {
       const Vec2 d = p - c;
       p = c + Vec2(cs * d.x - sn * d.y, sn * d.x + cs * d.y);
@@ -230,38 +239,38 @@ Polygon &Polygon::rotate(double angle, const Vec2 &c)
 Polygon &Polygon::scale(double s, const Vec2 &c)
 {
   if (!(s > 0.0)) throw GeometryError("polygon scale factor must be positive");
-  for (std::size_t k = 0; k < numRings(); ++k)
+  for (std::size_t k = 0; k < num_rings(); ++k)
     for (Vec2 &p : (k == 0 ? outer_ : holes_[k - 1])) p = c + (p - c) * s;
   return *this;
 }
 
-std::string Polygon::validationError() const
+std::string Polygon::validation_error() const
 {
-  const double diag = boundingBox().diagonal();
-  for (std::size_t k = 0; k < numRings(); ++k) {
+  const double diag = bounding_box().diagonal();
+  for (std::size_t k = 0; k < num_rings(); ++k) {
     const Ring &r = ring(k);
     if (r.size() < 3)
-      return "polygon " + ringName(k) + " has fewer than 3 distinct vertices (" +
+      return "polygon " + ring_name(k) + " has fewer than 3 distinct vertices (" +
              std::to_string(r.size()) + ")";
     for (const Vec2 &p : r)
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        return "polygon " + ringName(k) + " has a non-finite vertex";
+        return "polygon " + ring_name(k) + " has a non-finite vertex";
     // All vertices on one line: zero area (reported as such, not as a fold).
     bool collinear = true;
     for (const Vec2 &p : r) collinear = collinear && orient2d(r[0], r[1], p) == 0;
-    if (collinear) return "polygon " + ringName(k) + " has zero area";
-    const std::string s = ringSelfIntersection(r, k);
+    if (collinear) return "polygon " + ring_name(k) + " has zero area";
+    const std::string s = ring_self_intersection(r, k);
     if (!s.empty()) return s;
-    if (!(std::fabs(ringSignedArea(r)) > 1e-14 * diag * diag))
-      return "polygon " + ringName(k) + " has zero area";
+    if (!(std::fabs(ring_signed_area(r)) > 1e-14 * diag * diag))
+      return "polygon " + ring_name(k) + " has zero area";
   }
-  for (std::size_t k = 1; k < numRings(); ++k) {
+  for (std::size_t k = 1; k < num_rings(); ++k) {
     const Ring &h = ring(k);
-    if (ringsTouch(h, outer_) || locateInRing(outer_, h[0]) <= 0)
-      return "polygon " + ringName(k) + " is not strictly inside the outer ring";
+    if (rings_touch(h, outer_) || locate_in_ring(outer_, h[0]) <= 0)
+      return "polygon " + ring_name(k) + " is not strictly inside the outer ring";
     for (std::size_t m = 1; m < k; ++m) {
       const Ring &g = ring(m);
-      if (ringsTouch(h, g) || locateInRing(g, h[0]) >= 0 || locateInRing(h, g[0]) >= 0)
+      if (rings_touch(h, g) || locate_in_ring(g, h[0]) >= 0 || locate_in_ring(h, g[0]) >= 0)
         return "polygon holes " + std::to_string(m) + " and " + std::to_string(k) + " overlap";
     }
   }
@@ -271,7 +280,7 @@ std::string Polygon::validationError() const
 
 void Polygon::validate() const
 {
-  const std::string e = validationError();
+  const std::string e = validation_error();
   if (!e.empty()) throw GeometryError("invalid polygon: " + e);
 }
 

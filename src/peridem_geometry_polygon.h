@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // 2D polygons with holes: the grain shapes of the PERIDEM geometry library.
 //
 // A 2D grain D is represented, as in Bhattacharya & Lipton 2023, §5, by a piecewise
@@ -51,9 +60,9 @@ struct BoundingBox {
 };
 
 // Signed area of a ring (shoelace formula): > 0 for counter-clockwise.
-double ringSignedArea(const Ring &r);
+double ring_signed_area(const Ring &r);
 // Euclidean distance from p to the closed segment [a, b].
-double pointSegmentDistance(const Vec2 &p, const Vec2 &a, const Vec2 &b);
+double point_segment_distance(const Vec2 &p, const Vec2 &a, const Vec2 &b);
 
 class Polygon {
  public:
@@ -66,30 +75,30 @@ class Polygon {
   const Ring &outer() const { return outer_; }
   const std::vector<Ring> &holes() const { return holes_; }
   // Ring k: 0 is the outer ring, 1.. are the holes.
-  std::size_t numRings() const { return 1 + holes_.size(); }
+  std::size_t num_rings() const { return 1 + holes_.size(); }
   const Ring &ring(std::size_t k) const { return k == 0 ? outer_ : holes_[k - 1]; }
-  std::size_t numVertices() const;
+  std::size_t num_vertices() const;
 
   // Area of the material: outer area minus the hole areas.
   double area() const;
   // Area centroid of the material (holes subtracted).
   Vec2 centroid() const;
-  BoundingBox boundingBox() const;
+  BoundingBox bounding_box() const;
   // Largest |x| over the shape (Bhattacharya & Lipton 2023, §5 uses sup{|x| : x in D} for the
   // length of a cusp bisector that does not hit the boundary).
-  double maxRadius() const;
+  double max_radius() const;
 
   // Closed point-in-shape: boundary points are inside. Points within distance
   // tol of the boundary also count as inside; tol < 0 selects the default
   // 1e-12 * (bounding box diagonal), which absorbs round-off in node positions.
   bool contains(const Vec2 &p, double tol = -1.0) const;
   // Exact closed point-in-shape (robust predicates, no tolerance).
-  bool containsExact(const Vec2 &p) const;
+  bool contains_exact(const Vec2 &p) const;
   // Exact point location: +1 interior, 0 on the boundary, -1 exterior.
   int locate(const Vec2 &p) const;
   // Distance from p to the boundary (all rings).
-  double boundaryDistance(const Vec2 &p) const;
-  double defaultTolerance() const;
+  double boundary_distance(const Vec2 &p) const;
+  double default_tolerance() const;
 
   // Rigid motions and scaling (about a centre). scale() requires s > 0.
   Polygon &translate(const Vec2 &d);
@@ -99,8 +108,8 @@ class Polygon {
   // Empty string if the polygon is a valid grain, otherwise a message naming
   // the problem: fewer than 3 vertices, zero area, self-intersecting ring,
   // hole not strictly inside the outer ring, holes overlapping.
-  std::string validationError() const;
-  // Throws GeometryError with validationError() if the polygon is invalid.
+  std::string validation_error() const;
+  // Throws GeometryError with validation_error() if the polygon is invalid.
   void validate() const;
 
  private:

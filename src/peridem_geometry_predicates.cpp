@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Exact orientation predicate and segment tests built on it.
 // See peridem_geometry_predicates.h for why exactness matters (Bhattacharya & Lipton 2023, §5).
 #include "peridem_geometry_predicates.h"
@@ -12,7 +21,7 @@ namespace peridem {
 namespace {
 
 // Error-free transformations (Shewchuk 1997, Knuth): a + b = s + e exactly.
-inline void twoSum(double a, double b, double &s, double &e)
+inline void two_sum(double a, double b, double &s, double &e)
 {
   s = a + b;
   const double bv = s - a;
@@ -21,20 +30,20 @@ inline void twoSum(double a, double b, double &s, double &e)
 }
 
 // a * b = p + e exactly (needs a correctly rounded fma).
-inline void twoProduct(double a, double b, double &p, double &e)
+inline void two_product(double a, double b, double &p, double &e)
 {
   p = a * b;
   e = std::fma(a, b, -p);
 }
 
 // Adds b to the non-overlapping expansion e (increasing magnitude), in place.
-void growExpansion(std::vector<double> &e, double b)
+void grow_expansion(std::vector<double> &e, double b)
 {
   double q = b;
   std::size_t k = 0;
   for (double ei : e) {
     double s, err;
-    twoSum(q, ei, s, err);
+    two_sum(q, ei, s, err);
     q = s;
     if (err != 0.0) e[k++] = err;
   }
@@ -44,7 +53,7 @@ void growExpansion(std::vector<double> &e, double b)
 
 // Exact sign of bx*cy - bx*ay - ax*cy - by*cx + by*ax + ay*cx, i.e. the
 // expanded form of (b-a) x (c-a), whose products are all exact as two doubles.
-int orient2dExact(const Vec2 &a, const Vec2 &b, const Vec2 &c)
+int orient2d_exact(const Vec2 &a, const Vec2 &b, const Vec2 &c)
 {
   const double f[6][2] = {{b.x, c.y},  {-b.x, a.y}, {-a.x, c.y},
                           {-b.y, c.x}, {b.y, a.x},  {a.y, c.x}};
@@ -52,9 +61,9 @@ int orient2dExact(const Vec2 &a, const Vec2 &b, const Vec2 &c)
   e.reserve(24);
   for (const auto &t : f) {
     double p, err;
-    twoProduct(t[0], t[1], p, err);
-    growExpansion(e, err);
-    growExpansion(e, p);
+    two_product(t[0], t[1], p, err);
+    grow_expansion(e, err);
+    grow_expansion(e, p);
   }
   // Non-overlapping expansion: the sign is that of the largest component.
   for (auto it = e.rbegin(); it != e.rend(); ++it)
@@ -75,33 +84,33 @@ int orient2d(const Vec2 &a, const Vec2 &b, const Vec2 &c)
   const double errbound = bound * (std::fabs(detl) + std::fabs(detr));
   if (det > errbound) return 1;
   if (-det > errbound) return -1;
-  return orient2dExact(a, b, c);
+  return orient2d_exact(a, b, c);
 }
 
-bool onSegment(const Vec2 &a, const Vec2 &b, const Vec2 &c)
+bool on_segment(const Vec2 &a, const Vec2 &b, const Vec2 &c)
 {
   if (orient2d(a, b, c) != 0) return false;
   return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
          c.y <= std::max(a.y, b.y);
 }
 
-bool segmentsIntersectClosed(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
+bool segments_intersect_closed(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
 {
   const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
   const int o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return onSegment(a, b, c) || onSegment(a, b, d) || onSegment(c, d, a) || onSegment(c, d, b);
+  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
 }
 
-bool segmentHitsOpenSegment(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
+bool segment_hits_open_segment(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
 {
   const int o1 = orient2d(c, d, a), o2 = orient2d(c, d, b);
   if (o1 == 0 && o2 == 0) {
     // Collinear: compare the closed interval [a,b] with the open (c,d) along
     // the dominant axis of c->d (exact coordinate comparisons).
-    const bool useX = std::fabs(d.x - c.x) >= std::fabs(d.y - c.y);
-    double pa = useX ? a.x : a.y, pb = useX ? b.x : b.y;
-    double pc = useX ? c.x : c.y, pd = useX ? d.x : d.y;
+    const bool use_x = std::fabs(d.x - c.x) >= std::fabs(d.y - c.y);
+    double pa = use_x ? a.x : a.y, pb = use_x ? b.x : b.y;
+    double pc = use_x ? c.x : c.y, pd = use_x ? d.x : d.y;
     if (pa > pb) std::swap(pa, pb);
     if (pc > pd) std::swap(pc, pd);
     return pc < pd && pa < pd && pb > pc;
@@ -112,7 +121,7 @@ bool segmentHitsOpenSegment(const Vec2 &a, const Vec2 &b, const Vec2 &c, const V
   return orient2d(a, b, c) * orient2d(a, b, d) < 0;
 }
 
-bool segmentsCrossProperly(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
+bool segments_cross_properly(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d)
 {
   return orient2d(a, b, c) * orient2d(a, b, d) < 0 && orient2d(c, d, a) * orient2d(c, d, b) < 0;
 }

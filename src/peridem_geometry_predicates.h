@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Robust geometric predicates for the grain geometry library.
 //
 // Bond pruning (Bhattacharya & Lipton 2023, §5) is decided by the sign of small
@@ -19,17 +28,17 @@ struct Vec2;
 int orient2d(const Vec2 &a, const Vec2 &b, const Vec2 &c);
 
 // True if c lies on the closed segment [a, b] (exact).
-bool onSegment(const Vec2 &a, const Vec2 &b, const Vec2 &c);
+bool on_segment(const Vec2 &a, const Vec2 &b, const Vec2 &c);
 
 // Closed segment [a,b] and closed segment [c,d] share at least one point (exact).
-bool segmentsIntersectClosed(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d);
+bool segments_intersect_closed(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d);
 
 // Closed segment [a,b] meets the OPEN segment (c,d) (endpoints c, d excluded).
-bool segmentHitsOpenSegment(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d);
+bool segment_hits_open_segment(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d);
 
 // Open segments (a,b) and (c,d) cross at a single point interior to both
 // (a "proper" crossing; touching or collinear overlap does not count).
-bool segmentsCrossProperly(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d);
+bool segments_cross_properly(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &d);
 
 } // namespace peridem
 

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Built-in grain shapes (Bhattacharya & Lipton 2023, §6.2-6.4, §7.2) and the polygon file
 // reader (format in doc/peridem_polygon_format.rst).
 #include "peridem_geometry_shapes.h"
@@ -13,7 +22,7 @@ namespace peridem {
 
 namespace {
 
-void requirePositive(double v, const char *what)
+void require_positive_parameter(double v, const char *what)
 {
   if (!(v > 0.0) || !std::isfinite(v)) {
     std::ostringstream value; // the value as the user wrote it (up to 6 digits)
@@ -23,14 +32,14 @@ void requirePositive(double v, const char *what)
   }
 }
 
-void requireCount(int n, int minimum, const char *what)
+void require_count(int n, int minimum, const char *what)
 {
   if (n < minimum)
     throw GeometryError(std::string("shape parameter ") + what + " must be at least " +
                         std::to_string(minimum));
 }
 
-Ring circleRing(double r, int n)
+Ring circle_ring(double r, int n)
 {
   Ring ring;
   for (int i = 0; i < n; ++i) {
@@ -49,38 +58,38 @@ double uniform01(std::mt19937_64 &g)
 
 // A polygonal disk and a regular polygon are the same thing; only the name of
 // the vertex-count parameter in error messages differs.
-Polygon regularPolygon(double radius, int n, const char *countName)
+Polygon regular_polygon(double radius, int n, const char *count_name)
 {
-  requirePositive(radius, "radius");
-  requireCount(n, 3, countName);
-  return Polygon(circleRing(radius, n));
+  require_positive_parameter(radius, "radius");
+  require_count(n, 3, count_name);
+  return Polygon(circle_ring(radius, n));
 }
 
 } // namespace
 
-Polygon makeDisk(double radius, int segments)
+Polygon make_disk(double radius, int segments)
 {
-  return regularPolygon(radius, segments, "segments");
+  return regular_polygon(radius, segments, "segments");
 }
 
-Polygon makeRectangle(double width, double height)
+Polygon make_rectangle(double width, double height)
 {
-  requirePositive(width, "width");
-  requirePositive(height, "height");
+  require_positive_parameter(width, "width");
+  require_positive_parameter(height, "height");
   const double a = 0.5 * width, b = 0.5 * height;
   return Polygon({{-a, -b}, {a, -b}, {a, b}, {-a, b}});
 }
 
-Polygon makeRegularPolygon(double radius, int sides)
+Polygon make_regular_polygon(double radius, int sides)
 {
-  return regularPolygon(radius, sides, "sides");
+  return regular_polygon(radius, sides, "sides");
 }
 
-Polygon makePlus(double radius, double armWidth)
+Polygon make_plus(double radius, double arm_width)
 {
-  requirePositive(radius, "radius");
-  requirePositive(armWidth, "arm_width");
-  const double a = 0.5 * armWidth, r = radius;
+  require_positive_parameter(radius, "radius");
+  require_positive_parameter(arm_width, "arm_width");
+  const double a = 0.5 * arm_width, r = radius;
   if (!(a < r)) throw GeometryError("plus shape needs arm_width < 2 * radius");
   // 12 vertices, CCW, starting at the tip of the +x arm; the four reflex
   // corners (a, a), (-a, a), ... are Bhattacharya & Lipton's (2023) nonconvex cusps (§5).
@@ -98,20 +107,20 @@ Polygon makePlus(double radius, double armWidth)
                   {a, -a}});
 }
 
-Polygon makeRing(double outerRadius, double innerRadius, int segments)
+Polygon make_ring(double outer_radius, double inner_radius, int segments)
 {
-  requirePositive(outerRadius, "radius");
-  requirePositive(innerRadius, "inner_radius");
-  requireCount(segments, 3, "segments");
-  if (!(innerRadius < outerRadius * std::cos(kPi / segments)))
+  require_positive_parameter(outer_radius, "radius");
+  require_positive_parameter(inner_radius, "inner_radius");
+  require_count(segments, 3, "segments");
+  if (!(inner_radius < outer_radius * std::cos(kPi / segments)))
     throw GeometryError("ring needs inner_radius < radius (hole must be inside)");
-  return Polygon(circleRing(outerRadius, segments), {circleRing(innerRadius, segments)});
+  return Polygon(circle_ring(outer_radius, segments), {circle_ring(inner_radius, segments)});
 }
 
-Polygon makePerturbedDisk(double radius, int vertices, double roundness, std::uint64_t seed)
+Polygon make_perturbed_disk(double radius, int vertices, double roundness, std::uint64_t seed)
 {
-  requirePositive(radius, "radius");
-  requireCount(vertices, 3, "vertices");
+  require_positive_parameter(radius, "radius");
+  require_count(vertices, 3, "vertices");
   if (!(roundness > 0.0 && roundness <= 1.0))
     throw GeometryError("shape parameter roundness must be in (0, 1]");
   std::mt19937_64 gen(seed);
@@ -127,29 +136,29 @@ Polygon makePerturbedDisk(double radius, int vertices, double roundness, std::ui
   return Polygon(ring);
 }
 
-Polygon makeNeck(double length, double width, double neckWidth)
+Polygon make_neck(double length, double width, double neck_width)
 {
-  requirePositive(length, "length");
-  requirePositive(width, "width");
-  requirePositive(neckWidth, "neck_width");
-  if (!(neckWidth < width)) throw GeometryError("neck shape needs neck_width < width");
-  const double a = 0.5 * length, b = 0.5 * width, c = 0.5 * neckWidth;
+  require_positive_parameter(length, "length");
+  require_positive_parameter(width, "width");
+  require_positive_parameter(neck_width, "neck_width");
+  if (!(neck_width < width)) throw GeometryError("neck shape needs neck_width < width");
+  const double a = 0.5 * length, b = 0.5 * width, c = 0.5 * neck_width;
   return Polygon({{-a, -b}, {0.0, -c}, {a, -b}, {a, b}, {0.0, c}, {-a, b}});
 }
 
-Polygon makeNotchedPlate(double width, double height, double notchLength, double notchWidth,
-                         bool vNotch)
+Polygon make_notched_plate(double width, double height, double notch_length, double notch_width,
+                           bool v_notch)
 {
-  requirePositive(width, "width");
-  requirePositive(height, "height");
-  requirePositive(notchLength, "notch_length");
-  requirePositive(notchWidth, "notch_width");
-  if (!(notchLength < width)) throw GeometryError("notched plate needs notch_length < width");
-  if (!(notchWidth < height)) throw GeometryError("notched plate needs notch_width < height");
-  const double a = 0.5 * width, b = 0.5 * height, c = 0.5 * notchWidth;
-  const double tip = -a + notchLength;
+  require_positive_parameter(width, "width");
+  require_positive_parameter(height, "height");
+  require_positive_parameter(notch_length, "notch_length");
+  require_positive_parameter(notch_width, "notch_width");
+  if (!(notch_length < width)) throw GeometryError("notched plate needs notch_length < width");
+  if (!(notch_width < height)) throw GeometryError("notched plate needs notch_width < height");
+  const double a = 0.5 * width, b = 0.5 * height, c = 0.5 * notch_width;
+  const double tip = -a + notch_length;
   Ring r = {{-a, -b}, {a, -b}, {a, b}, {-a, b}, {-a, c}};
-  if (vNotch) {
+  if (v_notch) {
     r.emplace_back(tip, 0.0);
   } else {
     r.emplace_back(tip, c);
@@ -159,7 +168,7 @@ Polygon makeNotchedPlate(double width, double height, double notchLength, double
   return Polygon(r);
 }
 
-const std::vector<ShapeInfo> &builtinShapes()
+const std::vector<ShapeInfo> &builtin_shapes()
 {
   static const std::vector<ShapeInfo> shapes = {
       {"disk", "polygonal disk", {{"radius", 1.0, "radius R"}, {"segments", 64, "boundary edges"}}},
@@ -210,30 +219,31 @@ const std::vector<ShapeInfo> &builtinShapes()
   return shapes;
 }
 
-std::vector<std::string> builtinShapeNames()
+std::vector<std::string> builtin_shape_names()
 {
   std::vector<std::string> names;
-  for (const auto &s : builtinShapes()) names.push_back(s.name);
+  for (const auto &s : builtin_shapes()) names.push_back(s.name);
   return names;
 }
 
-std::string builtinShapeList()
+std::string builtin_shape_list()
 {
   std::string list;
-  for (const auto &n : builtinShapeNames()) list += (list.empty() ? "" : ", ") + n;
+  for (const auto &n : builtin_shape_names()) list += (list.empty() ? "" : ", ") + n;
   return list;
 }
 
-Polygon makeShape(const std::string &name, const std::map<std::string, double> &params)
+Polygon make_shape(const std::string &name, const std::map<std::string, double> &params)
 {
   const ShapeInfo *info = nullptr;
-  for (const auto &s : builtinShapes())
+  for (const auto &s : builtin_shapes())
     if (s.name == name) info = &s;
   if (!info)
-    throw GeometryError("unknown grain shape '" + name + "'; known shapes: " + builtinShapeList());
+    throw GeometryError("unknown grain shape '" + name +
+                        "'; known shapes: " + builtin_shape_list());
 
   std::map<std::string, double> v;
-  for (const auto &p : info->parameters) v[p.name] = p.defaultValue;
+  for (const auto &p : info->parameters) v[p.name] = p.default_value;
   for (const auto &kv : params) {
     if (!v.count(kv.first)) {
       std::string known;
@@ -252,39 +262,39 @@ Polygon makeShape(const std::string &name, const std::map<std::string, double> &
 
   Polygon p;
   if (name == "disk")
-    p = makeDisk(v["radius"], count("segments"));
+    p = make_disk(v["radius"], count("segments"));
   else if (name == "square")
-    p = makeRectangle(v["side"], v["side"]);
+    p = make_rectangle(v["side"], v["side"]);
   else if (name == "rectangle")
-    p = makeRectangle(v["width"], v["height"]);
+    p = make_rectangle(v["width"], v["height"]);
   else if (name == "polygon")
-    p = makeRegularPolygon(v["radius"], count("sides"));
+    p = make_regular_polygon(v["radius"], count("sides"));
   else if (name == "hexagon")
-    p = makeRegularPolygon(v["radius"], 6);
+    p = make_regular_polygon(v["radius"], 6);
   else if (name == "plus")
-    p = makePlus(v["radius"], v["arm_width"]);
+    p = make_plus(v["radius"], v["arm_width"]);
   else if (name == "ring")
-    p = makeRing(v["radius"], v["inner_radius"], count("segments"));
+    p = make_ring(v["radius"], v["inner_radius"], count("segments"));
   else if (name == "perturbed_disk") {
     const int seed = count("seed");
     if (seed < 0) throw GeometryError("shape parameter seed must be >= 0");
-    p = makePerturbedDisk(v["radius"], count("vertices"), v["roundness"],
-                          static_cast<std::uint64_t>(seed));
+    p = make_perturbed_disk(v["radius"], count("vertices"), v["roundness"],
+                            static_cast<std::uint64_t>(seed));
   } else if (name == "neck")
-    p = makeNeck(v["length"], v["width"], v["neck_width"]);
+    p = make_neck(v["length"], v["width"], v["neck_width"]);
   else
-    p = makeNotchedPlate(v["width"], v["height"], v["notch_length"], v["notch_width"],
-                         name == "v_notched_plate");
+    p = make_notched_plate(v["width"], v["height"], v["notch_length"], v["notch_width"],
+                           name == "v_notched_plate");
   p.validate();
   return p;
 }
 
-Polygon parsePolygon(std::istream &in, const std::string &src)
+Polygon parse_polygon(std::istream &in, const std::string &src)
 {
   Ring outer;
   std::vector<Ring> holes;
   Ring *current = nullptr;
-  bool haveOuter = false;
+  bool have_outer = false;
   std::string line;
   int lineno = 0;
   auto fail = [&](const std::string &msg) {
@@ -301,8 +311,8 @@ Polygon parsePolygon(std::istream &in, const std::string &src)
     if (first == "outer" || first == "hole") {
       if (ls >> extra) fail("unexpected text '" + extra + "' after '" + first + "'");
       if (first == "outer") {
-        if (haveOuter) fail("more than one 'outer' section");
-        haveOuter = true;
+        if (have_outer) fail("more than one 'outer' section");
+        have_outer = true;
         current = &outer;
       } else {
         holes.emplace_back();
@@ -317,18 +327,18 @@ Polygon parsePolygon(std::istream &in, const std::string &src)
     if (!current) fail("vertex before any 'outer' or 'hole' section");
     current->emplace_back(x, y);
   }
-  if (!haveOuter) throw GeometryError("polygon file " + src + ": no 'outer' section");
+  if (!have_outer) throw GeometryError("polygon file " + src + ": no 'outer' section");
   Polygon p(outer, holes);
-  const std::string err = p.validationError();
+  const std::string err = p.validation_error();
   if (!err.empty()) throw GeometryError("polygon file " + src + ": invalid polygon: " + err);
   return p;
 }
 
-Polygon readPolygonFile(const std::string &path)
+Polygon read_polygon_file(const std::string &path)
 {
   std::ifstream in(path);
   if (!in) throw GeometryError("cannot open polygon file '" + path + "'");
-  return parsePolygon(in, path);
+  return parse_polygon(in, path);
 }
 
 } // namespace peridem

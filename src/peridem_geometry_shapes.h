@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Built-in parametric grain shapes and the user polygon file reader.
 //
 // The shapes are those of Bhattacharya & Lipton 2023, §6.2-6.4 and §7.2 (perturbed
@@ -17,31 +26,31 @@
 
 namespace peridem {
 
-Polygon makeDisk(double radius, int segments);
-Polygon makeRectangle(double width, double height);
-Polygon makeRegularPolygon(double radius, int sides);
+Polygon make_disk(double radius, int segments);
+Polygon make_rectangle(double width, double height);
+Polygon make_regular_polygon(double radius, int sides);
 // Plus/cross (§6.3, §7.2): arm tips at distance `radius` (the half length R)
-// from the centre, arms of full width `armWidth`.
-Polygon makePlus(double radius, double armWidth);
+// from the centre, arms of full width `arm_width`.
+Polygon make_plus(double radius, double arm_width);
 // Annulus (§7.2): inner radius tau * outer radius, tau = 0.6 in the seed.
-Polygon makeRing(double outerRadius, double innerRadius, int segments);
+Polygon make_ring(double outer_radius, double inner_radius, int segments);
 // Randomly perturbed disk (§7.2): vertices (r_i cos t_i, r_i sin t_i),
 // t_i = 2 pi i / N, r_i = R (1 - X_i), X_i iid uniform on [0, 1 - phi]
 // (phi = roundness). Deterministic for a given seed on every platform.
-Polygon makePerturbedDisk(double radius, int vertices, double roundness, std::uint64_t seed);
-// Concave hourglass: length x width rectangle pinched to neckWidth at x = 0.
-Polygon makeNeck(double length, double width, double neckWidth);
+Polygon make_perturbed_disk(double radius, int vertices, double roundness, std::uint64_t seed);
+// Concave hourglass: length x width rectangle pinched to neck_width at x = 0.
+Polygon make_neck(double length, double width, double neck_width);
 // Plate width x height with a notch cut from the middle of the left edge
 // (§6.4: square plate, notch of length 0.5 reaching the centre). Rectangular
-// notch of the given width, or a V notch whose opening at the edge is notchWidth.
-Polygon makeNotchedPlate(double width, double height, double notchLength, double notchWidth,
-                         bool vNotch);
+// notch of the given width, or a V notch whose opening at the edge is notch_width.
+Polygon make_notched_plate(double width, double height, double notch_length, double notch_width,
+                           bool v_notch);
 
 // Parameter table of a built-in shape (names as in the seed, defaults for a
 // grain of characteristic size 1).
 struct ShapeParameter {
   std::string name;
-  double defaultValue;
+  double default_value;
   std::string description;
 };
 struct ShapeInfo {
@@ -49,20 +58,20 @@ struct ShapeInfo {
   std::string description;
   std::vector<ShapeParameter> parameters;
 };
-const std::vector<ShapeInfo> &builtinShapes();
-std::vector<std::string> builtinShapeNames();
+const std::vector<ShapeInfo> &builtin_shapes();
+std::vector<std::string> builtin_shape_names();
 // Comma-separated list of the built-in shape names, for error messages.
-std::string builtinShapeList();
+std::string builtin_shape_list();
 
 // Builds a built-in shape by name. Parameters not given take their defaults;
 // unknown shape or parameter names and bad values throw GeometryError listing
 // the valid choices. The result is validated.
-Polygon makeShape(const std::string &name, const std::map<std::string, double> &params = {});
+Polygon make_shape(const std::string &name, const std::map<std::string, double> &params = {});
 
 // User polygon files (format: doc/peridem_polygon_format.rst). Errors name the
 // file and the line. The result is validated.
-Polygon readPolygonFile(const std::string &path);
-Polygon parsePolygon(std::istream &in, const std::string &sourceName);
+Polygon read_polygon_file(const std::string &path);
+Polygon parse_polygon(std::istream &in, const std::string &source_name);
 
 } // namespace peridem
 

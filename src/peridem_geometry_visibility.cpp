@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Exact segment-in-shape test and the non-bond detector of Bhattacharya & Lipton 2023, §5.
 #include "peridem_geometry_visibility.h"
 #include "peridem_geometry_predicates.h"
@@ -11,21 +20,21 @@ namespace {
 
 // Is the direction from vertex v towards w (w != v) inside the closed interior
 // wedge at v, whose incident edges are a->v and v->c (material on the left)?
-bool inWedge(const Vec2 &a, const Vec2 &v, const Vec2 &c, const Vec2 &w)
+bool in_wedge(const Vec2 &a, const Vec2 &v, const Vec2 &c, const Vec2 &w)
 {
   const int turn = orient2d(a, v, c);
-  const bool leftOfIn = orient2d(a, v, w) >= 0;
-  const bool leftOfOut = orient2d(v, c, w) >= 0;
-  if (turn > 0) return leftOfIn && leftOfOut; // convex corner: intersection
-  if (turn < 0) return leftOfIn || leftOfOut; // reflex corner: union
-  return leftOfIn;                            // straight vertex: half plane
+  const bool left_of_in = orient2d(a, v, w) >= 0;
+  const bool left_of_out = orient2d(v, c, w) >= 0;
+  if (turn > 0) return left_of_in && left_of_out; // convex corner: intersection
+  if (turn < 0) return left_of_in || left_of_out; // reflex corner: union
+  return left_of_in;                              // straight vertex: half plane
 }
 
 } // namespace
 
-bool segmentInsideExact(const Polygon &D, const Vec2 &p, const Vec2 &q)
+bool segment_inside_exact(const Polygon &D, const Vec2 &p, const Vec2 &q)
 {
-  if (!D.containsExact(p) || !D.containsExact(q)) return false;
+  if (!D.contains_exact(p) || !D.contains_exact(q)) return false;
   if (p == q) return true;
   // The segment leaves D iff, at the first point z where it enters the open
   // exterior, one of these local events happens (z is on the boundary):
@@ -33,39 +42,39 @@ bool segmentInsideExact(const Polygon &D, const Vec2 &p, const Vec2 &q)
   //  (2) z is a vertex and the segment continues outside the interior wedge;
   //  (3) z = p or q lies inside an edge and the segment points outward.
   // Each event also proves the segment leaves D, so the test is exact.
-  for (std::size_t k = 0; k < D.numRings(); ++k) {
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
     const Ring &r = D.ring(k);
     const std::size_t n = r.size();
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 &a = r[(i + n - 1) % n], &v = r[i], &c = r[(i + 1) % n];
-      if (segmentsCrossProperly(p, q, v, c)) return false; // (1)
-      if (onSegment(p, q, v)) {                            // (2)
-        if (v != q && !inWedge(a, v, c, q)) return false;
-        if (v != p && !inWedge(a, v, c, p)) return false;
+      if (segments_cross_properly(p, q, v, c)) return false; // (1)
+      if (on_segment(p, q, v)) {                             // (2)
+        if (v != q && !in_wedge(a, v, c, q)) return false;
+        if (v != p && !in_wedge(a, v, c, p)) return false;
       }
       // (3): endpoint strictly inside edge v->c; the other end must be on the
       // material side (left) or on the edge line.
-      if (p != v && p != c && onSegment(v, c, p) && orient2d(v, c, q) < 0) return false;
-      if (q != v && q != c && onSegment(v, c, q) && orient2d(v, c, p) < 0) return false;
+      if (p != v && p != c && on_segment(v, c, p) && orient2d(v, c, q) < 0) return false;
+      if (q != v && q != c && on_segment(v, c, q) && orient2d(v, c, p) < 0) return false;
     }
   }
   return true;
 }
 
-double localFeatureSize(const Polygon &D)
+double local_feature_size(const Polygon &D)
 {
   double lfs = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < D.numRings(); ++k) {
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
     const Ring &r = D.ring(k);
     const std::size_t n = r.size();
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 &a = r[i], &b = r[(i + 1) % n];
       lfs = std::min(lfs, (b - a).norm());
-      for (std::size_t m = 0; m < D.numRings(); ++m) {
+      for (std::size_t m = 0; m < D.num_rings(); ++m) {
         const Ring &s = D.ring(m);
         for (std::size_t j = 0; j < s.size(); ++j) {
           if (m == k && (j == i || j == (i + 1) % n)) continue; // incident vertex
-          lfs = std::min(lfs, pointSegmentDistance(s[j], a, b));
+          lfs = std::min(lfs, point_segment_distance(s[j], a, b));
         }
       }
     }
@@ -75,9 +84,9 @@ double localFeatureSize(const Polygon &D)
 
 SeedPruner::SeedPruner(const Polygon &D, double delta)
 {
-  delta_ = delta > 0.0 ? delta : 0.01 * localFeatureSize(D);
-  const double farLength = D.maxRadius();
-  for (std::size_t k = 0; k < D.numRings(); ++k) {
+  delta_ = delta > 0.0 ? delta : 0.01 * local_feature_size(D);
+  const double far_length = D.max_radius();
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
     const Ring &r = D.ring(k);
     const std::size_t n = r.size();
     std::vector<Vec2> pbar(n);
@@ -105,8 +114,8 @@ SeedPruner::SeedPruner(const Polygon &D, double delta)
 
       // Cusp bisector p^i q^i: q^i is the first hit of the ray p^i + t n_i
       // with the boundary; without a hit, t0 = |p^i| + sup{|x| : x in D}.
-      double t0 = p.norm() + farLength;
-      for (std::size_t m = 0; m < D.numRings(); ++m) {
+      double t0 = p.norm() + far_length;
+      for (std::size_t m = 0; m < D.num_rings(); ++m) {
         const Ring &s = D.ring(m);
         for (std::size_t j = 0; j < s.size(); ++j) {
           if (m == k && (j == i || (j + 1) % n == i)) continue; // edges at p^i
@@ -152,10 +161,10 @@ bool SeedPruner::keeps(const Vec2 &x, const Vec2 &y) const
   // points strictly between p^i and q^i lie in the exterior, the ends lie on
   // the boundary), so bonds through a reflex corner that stay in D are kept.
   for (std::size_t i = 0; i < cusps_.size(); ++i)
-    if (overlaps(cuspBox_[i]) && segmentHitsOpenSegment(x, y, cusps_[i].a, cusps_[i].b))
+    if (overlaps(cuspBox_[i]) && segment_hits_open_segment(x, y, cusps_[i].a, cusps_[i].b))
       return false;
   for (std::size_t i = 0; i < extended_.size(); ++i)
-    if (overlaps(extBox_[i]) && segmentsIntersectClosed(x, y, extended_[i].a, extended_[i].b))
+    if (overlaps(extBox_[i]) && segments_intersect_closed(x, y, extended_[i].a, extended_[i].b))
       return false;
   return true;
 }

@@ -1,9 +1,18 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Bond visibility inside a nonconvex grain: is the straight segment between two
 // nodes inside the grain? (Bhattacharya & Lipton 2023, §5: a bond whose segment leaves
 // the domain D is a "non-bond" and is removed in the reference configuration.)
 //
 // Two independent implementations:
-//  * segmentInsideExact(): the reference answer, a purely combinatorial test
+//  * segment_inside_exact(): the reference answer, a purely combinatorial test
 //    with exact orientation predicates (closed set: boundary counts as inside,
 //    so bonds along an edge or through a reflex corner are kept).
 //  * SeedPruner: the method of Bhattacharya & Lipton 2023, §5, built from the extended boundary
@@ -22,7 +31,7 @@ namespace peridem {
 
 // True iff every point of the closed segment [p, q] lies in the closed shape
 // (p and q included). Exact for double input.
-bool segmentInsideExact(const Polygon &shape, const Vec2 &p, const Vec2 &q);
+bool segment_inside_exact(const Polygon &shape, const Vec2 &p, const Vec2 &q);
 
 // Bhattacharya & Lipton 2023, §5 non-bond detector for one (fixed) polygon.
 class SeedPruner {
@@ -41,9 +50,9 @@ class SeedPruner {
 
   double delta() const { return delta_; }
   // Extended boundary edges pbar^i pbar^{i+1} of every ring.
-  const std::vector<Segment> &extendedBoundary() const { return extended_; }
+  const std::vector<Segment> &extended_boundary() const { return extended_; }
   // Cusp bisectors p^i q^i at the nonconvex (reflex) vertices.
-  const std::vector<Segment> &cuspBisectors() const { return cusps_; }
+  const std::vector<Segment> &cusp_bisectors() const { return cusps_; }
   // True if the shape has no reflex vertex and no hole (then every bond of
   // nodes inside it is kept and keeps() returns true without any test).
   bool convex() const { return cusps_.empty(); }
@@ -59,7 +68,7 @@ class SeedPruner {
 
 // Shortest edge length or distance between a vertex and a non-incident edge,
 // over all rings (the scale below which the shape has no features).
-double localFeatureSize(const Polygon &shape);
+double local_feature_size(const Polygon &shape);
 
 } // namespace peridem
 

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // PERIDEM: material definitions and *.peridem reader (format: doc/peridem_material_format.rst).
 #include "peridem_material.h"
 
@@ -113,12 +122,12 @@ BondConstants material_bond_constants(const Material &m, int dimension, double h
   const double eps = horizon > 0.0 ? horizon : m.horizon;
   if (!(eps > 0.0))
     throw ParameterError("material '" + m.name + "' has no horizon; give one explicitly");
-  const bool hasE = known(m.elastic.E), hasK = known(m.elastic.K);
-  if (!hasE && !hasK) throw ParameterError("material '" + m.name + "' has neither E nor K");
-  const bool useE = dimension == 2 ? hasE : !hasK;
+  const bool has_e = known(m.elastic.E), has_k = known(m.elastic.K);
+  if (!has_e && !has_k) throw ParameterError("material '" + m.name + "' has neither E nor K");
+  const bool use_e = dimension == 2 ? has_e : !has_k;
   return derive_bond_constants(dimension, m.micromodulus,
-                               useE ? ElasticInput::YoungsModulus : ElasticInput::BulkModulus,
-                               useE ? m.elastic.E : m.elastic.K, m.G_c, eps);
+                               use_e ? ElasticInput::YoungsModulus : ElasticInput::BulkModulus,
+                               use_e ? m.elastic.E : m.elastic.K, m.G_c, eps);
 }
 
 bool is_known_unit_style(const std::string &u)

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // PERIDEM: material definitions and the *.peridem material file reader (no LAMMPS dependency).
 // File format: doc/peridem_material_format.rst.  Physics references: see peridem_bond_law.h.
 #ifndef PERIDEM_MATERIAL_H

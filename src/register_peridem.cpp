@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: the list of all PERIDEM styles (for_each_style), read by the
    routes that register them without LAMMPS's style headers: lmp_peridem and
    libperidem (driver/register_driver.cpp) and peridemplugin.so. In a LAMMPS
@@ -58,7 +67,7 @@ template <typename T> Command *command_creator(LAMMPS *lmp)
 
 } // namespace
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 // One line per style: the only list of PERIDEM styles (register_styles
 // and peridemplugin.so both read it).
@@ -80,4 +89,4 @@ void for_each_style(StyleSink &sink)
   sink.command("create_peridem_bed", &command_creator<CreatePeridemBed>);
 }
 
-} // namespace PERIDEM
+} // namespace peridem_lmp

@@ -1,4 +1,13 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    PERIDEM: the list of all PERIDEM styles with their creators, for the
    routes that register them without LAMMPS's style headers (lmp_peridem,
    libperidem: driver/register_driver.h; peridemplugin.so).
@@ -17,7 +26,7 @@ class Compute;
 class Command;
 } // namespace LAMMPS_NS
 
-namespace PERIDEM {
+namespace peridem_lmp {
 
 /* The creators LAMMPS's style maps hold (Atom::AtomVecCreator, Force::BondCreator, ...). */
 using AtomVecCreator = LAMMPS_NS::AtomVec *(*)(LAMMPS_NS::LAMMPS *);
@@ -42,6 +51,6 @@ class StyleSink {
 /* The list of PERIDEM styles, shared by register_styles() and the plugin. */
 void for_each_style(StyleSink &sink);
 
-} // namespace PERIDEM
+} // namespace peridem_lmp
 
 #endif

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Benchmark: the loaded compaction bed (in.compaction, in.timed) with
 # bond_style peridem and peridem/lps on 1 and 2 MPI ranks, side by side with
 # the peri/pmb yardstick (LAMMPS's examples/peri/in.peri.pmb, 1 rank) and,

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Benchmark: pair_style peridem/contact in a bed of 500 disk grains (66,500+
 # nodes, in.bed) settling under gravity in fix peridem/wall walls, on 1 and 2
 # MPI ranks. Prints a markdown table for the README: time per step, the

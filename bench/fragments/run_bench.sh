@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Benchmark: the cost of compute peridem/fragments called every 100 steps
 # in a settling bed of 103,572 nodes (in.fragments_bed), on 1 and 2 MPI
 # ranks. Each repeat runs the bed without and with c_frag in the thermo

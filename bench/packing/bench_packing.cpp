@@ -1,8 +1,17 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Benchmark: jam N polydisperse disks (radius
 // 0.4-1.1, mean 0.8, sd 0.09, Bhattacharya & Lipton's (2023) §7.3 bed) in a container
 // of width sqrt(N) mean diameters (a square-ish bed), one core. Prints N, the
 // median wall and CPU time of `repeats` runs, iterations, packing fraction,
-// rattlers, and (with -DGROW, the default since growRattlers exists) the CPU time of
+// rattlers, and (with -DGROW, the default since grow_rattlers exists) the CPU time of
 // the rattler growth and the rattlers left after it.
 // Not a unit test; build by hand from the repo root:
 //   g++ -O3 -std=c++17 -Isrc bench/packing/bench_packing.cpp
@@ -27,7 +36,7 @@ int main(int argc, char **argv)
   for (int a = 1; a < argc; a++) {
     const std::size_t n = std::strtoul(argv[a], nullptr, 10);
     const int repeats = n <= 20000 ? 5 : 1;
-    const auto r = drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), n, 1);
+    const auto r = draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), n, 1);
     PackingOptions o;
     o.hi[0] = 1.6 * std::sqrt(static_cast<double>(n));
     o.hi[1] = 4 * o.hi[0];
@@ -36,16 +45,16 @@ int main(int argc, char **argv)
     for (int k = 0; k < repeats; k++) {
       const auto t0 = std::chrono::steady_clock::now();
       const std::clock_t c0 = std::clock();
-      p = packSpheres(r, o);
+      p = pack_spheres(r, o);
       cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
       t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
     std::sort(t.begin(), t.end());
     std::sort(cpu.begin(), cpu.end());
-    const auto j = jammingReport(p, o.tolerance);
+    const auto j = jamming_report(p, o.tolerance);
 #ifndef NO_GROW
     const std::clock_t g0 = std::clock();
-    const RattlerGrowth G = growRattlers(p, 1.1, o.tolerance);
+    const RattlerGrowth G = grow_rattlers(p, 1.1, o.tolerance);
     const double gcpu = static_cast<double>(std::clock() - g0) / CLOCKS_PER_SEC;
     std::printf("N %zu  rattler growth cpu %.3f s: rattlers %zu -> %zu (%d passes), fraction "
                 "%.4f\n",
@@ -55,7 +64,7 @@ int main(int argc, char **argv)
                 "iterations %d  fraction %.4f  rattlers %.1f%%  smallest gap %.2g\n",
                 n, t[t.size() / 2], cpu[cpu.size() / 2], repeats,
                 1e9 * cpu[cpu.size() / 2] / (static_cast<double>(n) * p.iterations), p.iterations,
-                p.fraction, 100.0 * j.rattlers / n, smallestGaps(p).pair);
+                p.fraction, 100.0 * j.rattlers / n, smallest_gaps(p).pair);
     std::fflush(stdout);
   }
 }

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Side-by-side timing of the packer against an older commit (issue 12):
 #   bench/packing/compare.sh REV [N ...]     (default N: 1500 5000 20000 100000)
 # builds bench_packing.cpp with REV's src/peridem_geometry_packing.* (old) and with

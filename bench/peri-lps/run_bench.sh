@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Benchmark: LAMMPS's examples/peri/in.peri.lps (3487 nodes, horizon 3
 # lattice spacings, 1000 steps) with stock pair_style peri/lps, and the same
 # problem with bond_style peridem/lps (examples/peri-lps-impact), on 1 and 2

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Benchmark: LAMMPS's examples/peri/in.peri.pmb (3487 nodes, horizon 3
 # lattice spacings, 1000 steps, dumps off) with stock pair_style peri/pmb,
 # and the same problem with bond_style peridem (examples/peri-impact), on 1

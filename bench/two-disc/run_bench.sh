@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Benchmark: the two-disc drop (in.drop: 242 nodes, 20,000 steps, dt 3e-7 s)
 # on 1 rank, best of `repeats`, interleaved with PERIDEM_BENCH_BASE (another
 # build, e.g. /work/main/build) when given. Prints a markdown table: time

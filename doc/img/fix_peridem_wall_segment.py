@@ -1,4 +1,12 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """Draws doc/img/fix_peridem_wall_segment.png: the wall segment S of a node's contact
 disk (left) and the corner regions combined by inclusion-exclusion (right).
 Run: python3 doc/img/fix_peridem_wall_segment.py  (needs matplotlib)."""

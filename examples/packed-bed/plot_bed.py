@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """Draw a create_peridem_bed file: security disks coloured by label, or with
 a dump of the grains (id mol type x y) their nodes inside the disk outlines.
 usage: python3 plot_bed.py bed.txt out.png [grains.dump]"""

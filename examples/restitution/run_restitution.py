@@ -1,4 +1,12 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """Coefficient of restitution vs the damping parameter eps_n (Jha et al. 2021, §4.1, Table 2).
 
 Runs in.restitution for eps_n = 1, 0.95, 0.9, 0.85, 0.8 (damping centroid, C = 100) twice:

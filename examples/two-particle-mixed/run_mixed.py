@@ -1,4 +1,12 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """Coefficient of restitution of two particles of mixed sizes and materials (PeriDEM seed, Jha,
 Desai, Bhattacharya & Lipton, Sec. 4.1, Table 3), with examples/restitution/in.restitution.
 

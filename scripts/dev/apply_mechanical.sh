@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Applies the package-wide mechanical edits to a PERIDEM tree (default: this repository):
 #   1. the GPL-2.0 short header in every source file (scripts/dev/license_headers.py);
 #   2. the glue namespace PERIDEM -> peridem_lmp (scripts/dev/rename_namespace.py);

@@ -1,4 +1,12 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """Renames the camelCase functions and variables of the LAMMPS-free core (src/peridem_*) to
 snake_case, the one naming style of LAMMPS (and of the rest of the core), everywhere they are
 used (src, driver, plugin, unittest, bench, doc).

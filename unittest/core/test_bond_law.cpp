@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Tests of the pure bond law (src/peridem_bond_law.h): conservative forces, c and s0 against
 // numerical integration of the strain energy density and of the fracture energy, Bhattacharya &
 // Lipton 2023, Table 1, volume-correction ramps, breakage and damage measures.

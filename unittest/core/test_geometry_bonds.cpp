@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Bond creation (cell list vs brute force), notch/crack removal, 3D grains and
 // the one-call grain helpers with their input errors.
 #include "peridem_geometry_grain.h"
@@ -20,27 +29,27 @@ std::vector<Bond> bruteForce(const std::vector<Vec2> &x, double eps)
   std::vector<Bond> b;
   for (std::size_t i = 0; i < x.size(); ++i)
     for (std::size_t j = i + 1; j < x.size(); ++j)
-      if (withinHorizon((x[i] - x[j]).norm2(), eps)) b.emplace_back(int(i), int(j));
+      if (within_horizon((x[i] - x[j]).norm2(), eps)) b.emplace_back(int(i), int(j));
   return b;
 }
 } // namespace
 
 TEST(GeometryBonds, CellListEqualsBruteForce)
 {
-  const Polygon sq = makeShape("square", {{"side", 2.0}});
+  const Polygon sq = make_shape("square", {{"side", 2.0}});
   for (double h : {0.2, 0.1, 0.05}) {
     for (double m : {1.0, 3.0, 4.0}) {
-      const Nodes2D n = latticeNodes(sq, h);
-      const auto b = pairsWithinHorizon(n.x, m * h);
+      const Nodes2D n = lattice_nodes(sq, h);
+      const auto b = pairs_within_horizon(n.x, m * h);
       EXPECT_EQ(b, bruteForce(n.x, m * h)) << h << " " << m;
       for (const Bond &p : b) EXPECT_LT(p.first, p.second);
       // Convex square: no pruning, and the interior node degree matches the
       // lattice count of points with |(i, j)| <= m (m = 3: 28, m = 4: 48).
-      EXPECT_EQ(createBonds(sq, n.x, m * h, Pruning::Seed), b);
+      EXPECT_EQ(create_bonds(sq, n.x, m * h, Pruning::Seed), b);
     }
   }
-  const Nodes2D n = latticeNodes(sq, 0.1);
-  const auto b = pairsWithinHorizon(n.x, 0.3);
+  const Nodes2D n = lattice_nodes(sq, 0.1);
+  const auto b = pairs_within_horizon(n.x, 0.3);
   std::vector<int> degree(n.size(), 0);
   for (const Bond &p : b) ++degree[p.first], ++degree[p.second];
   int center = -1;
@@ -53,13 +62,13 @@ TEST(GeometryBonds, CellListEqualsBruteForce)
   unsigned s = 12345;
   auto rnd = [&] { return (s = s * 1103515245u + 12345u) / 4294967296.0; };
   for (int i = 0; i < 3 * 400; ++i) c.push_back(rnd());
-  const auto b3 = pairsWithinHorizon(c, 3, 0.15);
+  const auto b3 = pairs_within_horizon(c, 3, 0.15);
   std::size_t brute = 0;
   for (int i = 0; i < 400; ++i)
     for (int j = i + 1; j < 400; ++j) {
       double d2 = 0;
       for (int d = 0; d < 3; ++d) d2 += std::pow(c[3 * i + d] - c[3 * j + d], 2);
-      brute += withinHorizon(d2, 0.15);
+      brute += within_horizon(d2, 0.15);
     }
   EXPECT_EQ(b3.size(), brute);
   EXPECT_GT(brute, 100u);
@@ -68,14 +77,14 @@ TEST(GeometryBonds, CellListEqualsBruteForce)
 TEST(GeometryBonds, CutsRemoveBondsAcrossNotch)
 {
   // Bhattacharya & Lipton 2023, §6.4: unit square with a notch from the left edge to the centre.
-  const Polygon sq = makeShape("square", {{"side", 1.0}});
+  const Polygon sq = make_shape("square", {{"side", 1.0}});
   const double h = 0.05;
   LatticeOptions lo;
   lo.offset = {0.5 * h, 0.5 * h}; // no node on the crack line y = 0
-  const Nodes2D n = latticeNodes(sq, h, lo);
-  auto bonds = createBonds(sq, n.x, 3 * h);
+  const Nodes2D n = lattice_nodes(sq, h, lo);
+  auto bonds = create_bonds(sq, n.x, 3 * h);
   const auto before = bonds;
-  const std::size_t removed = removeBondsCrossing(bonds, n.x, {{{-0.5, 0.0}, {0.0, 0.0}}});
+  const std::size_t removed = remove_bonds_crossing(bonds, n.x, {{{-0.5, 0.0}, {0.0, 0.0}}});
   EXPECT_GT(removed, 0u);
   EXPECT_EQ(before.size() - bonds.size(), removed);
   for (const Bond &b : bonds) {
@@ -88,10 +97,10 @@ TEST(GeometryBonds, CutsRemoveBondsAcrossNotch)
     }
   }
   // Touching at an end node or running along the cut does not cut.
-  EXPECT_FALSE(bondCrossesCut({0, 0}, {1, 1}, {{-1, 0}, {1, 0}}));
-  EXPECT_FALSE(bondCrossesCut({-0.5, 0}, {0.5, 0}, {{-1, 0}, {1, 0}}));
-  EXPECT_TRUE(bondCrossesCut({0, -1}, {0, 1}, {{-1, 0}, {0, 0}})); // through the tip
-  EXPECT_FALSE(bondCrossesCut({0.1, -1}, {0.1, 1}, {{-1, 0}, {0, 0}}));
+  EXPECT_FALSE(bond_crosses_cut({0, 0}, {1, 1}, {{-1, 0}, {1, 0}}));
+  EXPECT_FALSE(bond_crosses_cut({-0.5, 0}, {0.5, 0}, {{-1, 0}, {1, 0}}));
+  EXPECT_TRUE(bond_crosses_cut({0, -1}, {0, 1}, {{-1, 0}, {0, 0}})); // through the tip
+  EXPECT_FALSE(bond_crosses_cut({0.1, -1}, {0.1, 1}, {{-1, 0}, {0, 0}}));
 }
 
 // Issue 14: a cut drawn along a node row (a lattice grain's centre line, seed §6.4) cut
@@ -99,10 +108,10 @@ TEST(GeometryBonds, CutsRemoveBondsAcrossNotch)
 // (the row to the left of a -> b), so the cut separates the grain.
 TEST(GeometryBonds, CutAlongNodeRowSeparates)
 {
-  const Polygon sq = makeShape("square", {{"side", 1.0}});
+  const Polygon sq = make_shape("square", {{"side", 1.0}});
   const double h = 0.05;
-  const Nodes2D n = latticeNodes(sq, h, LatticeOptions{}); // rows at y = j h, one at y = 0
-  const auto all = createBonds(sq, n.x, 3 * h);
+  const Nodes2D n = lattice_nodes(sq, h, LatticeOptions{}); // rows at y = j h, one at y = 0
+  const auto all = create_bonds(sq, n.x, 3 * h);
   // connected pieces of a bond list (union-find)
   auto pieces = [&](const std::vector<Bond> &bonds) {
     std::vector<std::size_t> up(n.size());
@@ -127,7 +136,7 @@ TEST(GeometryBonds, CutAlongNodeRowSeparates)
     auto bonds = all;
     const CutSegment c =
         leftToRight ? CutSegment{{-0.6, 0.0}, {0.6, 0.0}} : CutSegment{{0.6, 0.0}, {-0.6, 0.0}};
-    removeBondsCrossing(bonds, n.x, {c});
+    remove_bonds_crossing(bonds, n.x, {c});
     EXPECT_EQ(pieces(bonds), (std::vector<std::size_t>{below, above + row}));
     for (const Bond &b : bonds) {
       const double y0 = n.x[b.first].y, y1 = n.x[b.second].y;
@@ -139,7 +148,7 @@ TEST(GeometryBonds, CutAlongNodeRowSeparates)
     // the same bonds as a cut moved a hundred-millionth of a spacing to its right
     auto shifted = all;
     const double dy = leftToRight ? -1e-8 * h : 1e-8 * h;
-    removeBondsCrossing(shifted, n.x, {{{c.a.x, dy}, {c.b.x, dy}}});
+    remove_bonds_crossing(shifted, n.x, {{{c.a.x, dy}, {c.b.x, dy}}});
     EXPECT_EQ(bonds, shifted);
   }
 
@@ -147,7 +156,7 @@ TEST(GeometryBonds, CutAlongNodeRowSeparates)
   // and every bond from a node below the row to a node on or above it that meets the row
   // left of the tip (x <= 0) is gone; all other bonds are kept
   auto bonds = all;
-  removeBondsCrossing(bonds, n.x, {{{-0.6, 0.0}, {0.0, 0.0}}});
+  remove_bonds_crossing(bonds, n.x, {{{-0.6, 0.0}, {0.0, 0.0}}});
   EXPECT_EQ(pieces(bonds).size(), 1u);
   std::size_t expect_removed = 0;
   for (const Bond &b : all) {
@@ -167,7 +176,7 @@ TEST(GeometryBonds, Shapes3D)
   EXPECT_NEAR(Shape3D::sphere(2).volume(), 32.0 / 3.0 * pi, 1e-13);
   EXPECT_DOUBLE_EQ(Shape3D::box(1, 2, 3).volume(), 6.0);
   EXPECT_NEAR(Shape3D::cylinder(1, 2).volume(), 2 * pi, 1e-14);
-  const Shape3D plus = Shape3D::extrusion(makeShape("plus"), 0.5);
+  const Shape3D plus = Shape3D::extrusion(make_shape("plus"), 0.5);
   EXPECT_NEAR(plus.volume(), 0.5 * (1.6 - 0.16), 1e-14);
   EXPECT_TRUE(Shape3D::sphere(1).contains({0, 0, 1}));
   EXPECT_FALSE(Shape3D::sphere(1).contains({0.6, 0.6, 0.6}));
@@ -176,67 +185,69 @@ TEST(GeometryBonds, Shapes3D)
   EXPECT_TRUE(plus.contains({0.9, 0.1, 0.25}));
   EXPECT_FALSE(plus.contains({0.9, 0.9, 0}));
   EXPECT_FALSE(plus.convex());
-  EXPECT_TRUE(Shape3D::extrusion(makeShape("hexagon"), 1).convex());
+  EXPECT_TRUE(Shape3D::extrusion(make_shape("hexagon"), 1).convex());
 
   // Lattice volume converges to the analytic volume.
-  const Nodes3D s = latticeNodes3D(Shape3D::sphere(1), 0.05);
+  const Nodes3D s = lattice_nodes_3d(Shape3D::sphere(1), 0.05);
   EXPECT_NEAR(s.size() * std::pow(0.05, 3), 4.0 / 3.0 * pi, 0.02);
-  const Nodes3D b = latticeNodes3D(Shape3D::box(1, 1, 1), 0.25);
+  const Nodes3D b = lattice_nodes_3d(Shape3D::box(1, 1, 1), 0.25);
   EXPECT_EQ(b.size(), 125u); // -0.5 .. 0.5 in steps of 0.25
 
   // Extruded plus: bonds across the gap between arms are pruned; Bhattacharya & Lipton 2023, §5 on
   // the projection agrees with the exact prism test; cell list vs brute.
   const double h = 0.1;
-  const Nodes3D n = latticeNodes3D(plus, h);
-  const auto all = createBonds3D(plus, n.x, 3 * h, Pruning::None);
-  const auto seed = createBonds3D(plus, n.x, 3 * h, Pruning::Seed);
-  const auto exact = createBonds3D(plus, n.x, 3 * h, Pruning::Exact);
+  const Nodes3D n = lattice_nodes_3d(plus, h);
+  const auto all = create_bonds_3d(plus, n.x, 3 * h, Pruning::None);
+  const auto seed = create_bonds_3d(plus, n.x, 3 * h, Pruning::Seed);
+  const auto exact = create_bonds_3d(plus, n.x, 3 * h, Pruning::Exact);
   EXPECT_EQ(seed, exact);
   EXPECT_LT(seed.size(), all.size());
   std::size_t brute = 0;
   for (std::size_t i = 0; i < n.size(); ++i)
     for (std::size_t j = i + 1; j < n.size(); ++j)
-      brute += withinHorizon((n.x[i] - n.x[j]).norm2(), 3 * h);
+      brute += within_horizon((n.x[i] - n.x[j]).norm2(), 3 * h);
   EXPECT_EQ(all.size(), brute);
-  EXPECT_TRUE(segmentInsideExact3D(plus, {0.9, 0.1, -0.25}, {-0.1, 0.15, 0.25}));
-  EXPECT_FALSE(segmentInsideExact3D(plus, {0.9, 0.15, 0}, {0.15, 0.9, 0}));
-  EXPECT_FALSE(segmentInsideExact3D(plus, {0.9, 0.1, 0}, {0.9, 0.1, 0.3})); // leaves in z
+  EXPECT_TRUE(segment_inside_exact_3d(plus, {0.9, 0.1, -0.25}, {-0.1, 0.15, 0.25}));
+  EXPECT_FALSE(segment_inside_exact_3d(plus, {0.9, 0.15, 0}, {0.15, 0.9, 0}));
+  EXPECT_FALSE(segment_inside_exact_3d(plus, {0.9, 0.1, 0}, {0.9, 0.1, 0.3})); // leaves in z
 }
 
 TEST(GeometryBonds, GrainHelpersAndErrors)
 {
-  const Grain2D g = discretizeShape("plus", {}, 0.1, 0.3);
+  const Grain2D g = discretize_shape("plus", {}, 0.1, 0.3);
   EXPECT_GT(g.nodes.size(), 100u);
   EXPECT_FALSE(g.bonds.empty());
   GrainOptions o;
   o.cuts = {{{-1, 0.05}, {0, 0.05}}};
   o.lattice.volume = NodalVolume::ExactClip;
-  const Grain2D c = discretizeShape("plus", {}, 0.1, 0.3, o);
+  const Grain2D c = discretize_shape("plus", {}, 0.1, 0.3, o);
   EXPECT_LT(c.bonds.size(), g.bonds.size());
   double vsum = 0;
   for (double v : c.nodes.volume) vsum += v;
-  EXPECT_NEAR(vsum, makeShape("plus").area(), 1e-12);
+  EXPECT_NEAR(vsum, make_shape("plus").area(), 1e-12);
 
-  std::string e = geometryErrorOf([] { discretizeShape("disk", {}, 3.0, 4.0); });
+  std::string e = geometryErrorOf([] { discretize_shape("disk", {}, 3.0, 4.0); });
   EXPECT_NE(e.find("node spacing 3 is larger than the grain"), std::string::npos) << e;
-  e = geometryErrorOf([] { discretizeShape("disk", {}, 0.1, 0.05); });
+  e = geometryErrorOf([] { discretize_shape("disk", {}, 0.1, 0.05); });
   EXPECT_NE(e.find("horizon 0.05 is smaller than the node spacing 0.1"), std::string::npos) << e;
-  e = geometryErrorOf([] { discretizeShape("blob", {}, 0.1, 0.3); });
+  e = geometryErrorOf([] { discretize_shape("blob", {}, 0.1, 0.3); });
   EXPECT_NE(e.find("unknown grain shape 'blob'; known shapes: disk"), std::string::npos) << e;
-  e = geometryErrorOf([] { discretizePolygonFile("/nope.poly", 0.1, 0.3); });
+  e = geometryErrorOf([] { discretize_polygon_file("/nope.poly", 0.1, 0.3); });
   EXPECT_NE(e.find("cannot open polygon file '/nope.poly'"), std::string::npos) << e;
-  e = geometryErrorOf([] { discretizeGrain(Polygon({{0, 0}, {2, 2}, {2, 0}, {0, 2}}), 0.1, 0.3); });
+  e = geometryErrorOf([] {
+    discretize_grain(Polygon({{0, 0}, {2, 2}, {2, 0}, {0, 2}}), 0.1, 0.3);
+  });
   EXPECT_NE(e.find("self-intersecting"), std::string::npos) << e;
-  e = geometryErrorOf([] { discretizeGrain3D(Shape3D::sphere(1), 5, 6); });
+  e = geometryErrorOf([] { discretize_grain_3d(Shape3D::sphere(1), 5, 6); });
   EXPECT_NE(e.find("larger than the grain"), std::string::npos) << e;
 
   // Mesh grain: volumes from eq. 31 and bonds (square with a hole, pruned).
   const Mesh2D m =
-      readGmshMesh(std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/square_hole_v41.msh");
+      read_gmsh_mesh(std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/square_hole_v41.msh");
   const Polygon D({{0, 0}, {1, 0}, {1, 1}, {0, 1}},
                   {{{0.4, 0.4}, {0.6, 0.4}, {0.6, 0.6}, {0.4, 0.6}}});
-  const Grain2D mg = meshGrain(m, 0.7, &D);
-  const Grain2D mu = meshGrain(m, 0.7);
+  const Grain2D mg = mesh_grain(m, 0.7, &D);
+  const Grain2D mu = mesh_grain(m, 0.7);
   EXPECT_LT(mg.bonds.size(), mu.bonds.size()); // bonds across the hole pruned
-  EXPECT_THROW(meshGrain(m, 0.01), GeometryError);
+  EXPECT_THROW(mesh_grain(m, 0.01), GeometryError);
 }

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Discretization: lattice nodes and volumes (h^2 or exactly clipped cells),
 // Gmsh import with P1/Q1 nodal volumes (Jha et al. 2021, §3.1 eq. 31).
 #include "peridem_geometry_discretize.h"
@@ -21,7 +30,7 @@ double sum(const std::vector<double> &v)
 const std::string kData = std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/";
 std::string errorOf(const std::string &path)
 {
-  return geometryErrorOf([&] { readGmshMesh(path); });
+  return geometryErrorOf([&] { read_gmsh_mesh(path); });
 }
 std::string writeTemp(const std::string &name, const std::string &text)
 {
@@ -35,29 +44,29 @@ TEST(GeometryDiscretize, SquareLatticeCounts)
 {
   // [-1,1]^2 with h = 0.2 and the default lattice through the origin: nodes at
   // -1, -0.8, ..., 1 in each direction (boundary nodes kept): 11 x 11.
-  const Polygon sq = makeShape("square", {{"side", 2.0}});
-  const Nodes2D n = latticeNodes(sq, 0.2);
+  const Polygon sq = make_shape("square", {{"side", 2.0}});
+  const Nodes2D n = lattice_nodes(sq, 0.2);
   EXPECT_EQ(n.size(), 121u);
   for (double v : n.volume) EXPECT_DOUBLE_EQ(v, 0.04);
   // Half-cell offset: nodes at +-0.1 ... +-0.9: 10 x 10, exact volumes = h^2.
   LatticeOptions o;
   o.offset = {0.1, 0.1};
   o.volume = NodalVolume::ExactClip;
-  const Nodes2D m = latticeNodes(sq, 0.2, o);
+  const Nodes2D m = lattice_nodes(sq, 0.2, o);
   EXPECT_EQ(m.size(), 100u);
   for (double v : m.volume) EXPECT_NEAR(v, 0.04, 1e-15);
   // Every node is exactly inside the shape.
-  for (const Vec2 &p : n.x) EXPECT_TRUE(sq.containsExact(p));
+  for (const Vec2 &p : n.x) EXPECT_TRUE(sq.contains_exact(p));
 }
 
 TEST(GeometryDiscretize, ExactClippedVolumesSumToArea)
 {
   std::vector<Polygon> shapes;
-  for (const auto &name : builtinShapeNames()) shapes.push_back(makeShape(name));
+  for (const auto &name : builtin_shape_names()) shapes.push_back(make_shape(name));
   shapes.push_back(
-      readPolygonFile(std::string(PERIDEM_SOURCE_DIR) + "/potentials/shapes/star.poly"));
-  shapes.push_back(readPolygonFile(std::string(PERIDEM_SOURCE_DIR) +
-                                   "/potentials/shapes/plate_with_holes.poly"));
+      read_polygon_file(std::string(PERIDEM_SOURCE_DIR) + "/potentials/shapes/star.poly"));
+  shapes.push_back(read_polygon_file(std::string(PERIDEM_SOURCE_DIR) +
+                                     "/potentials/shapes/plate_with_holes.poly"));
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     for (double h : {0.2, 0.05, 0.0123}) {
       LatticeOptions o;
@@ -65,7 +74,7 @@ TEST(GeometryDiscretize, ExactClippedVolumesSumToArea)
       o.offset = {0.013 * s, -0.007};
       Polygon D = shapes[s];
       D.rotate(0.1 * s);
-      const Nodes2D n = latticeNodes(D, h, o);
+      const Nodes2D n = lattice_nodes(D, h, o);
       const double total = sum(n.volume), area = D.area();
       EXPECT_NEAR(total, area, 1e-12 * area) << "shape " << s << " h " << h;
       for (double v : n.volume) {
@@ -73,7 +82,7 @@ TEST(GeometryDiscretize, ExactClippedVolumesSumToArea)
         EXPECT_LE(v, 3.0 * h * h); // a cell plus at most a few orphan slivers
       }
       // h^2 volumes approximate the area to O(h * perimeter).
-      const Nodes2D c = latticeNodes(D, h);
+      const Nodes2D c = lattice_nodes(D, h);
       EXPECT_NEAR(sum(c.volume), area, 0.2 * h * 12.0) << "shape " << s;
     }
   }
@@ -81,40 +90,40 @@ TEST(GeometryDiscretize, ExactClippedVolumesSumToArea)
 
 TEST(GeometryDiscretize, ClippedBoxArea)
 {
-  const Polygon ring = makeRing(1.0, 0.5, 8);
-  EXPECT_NEAR(clippedBoxArea(ring, {-2, -2}, {2, 2}), ring.area(), 1e-15);
-  EXPECT_NEAR(clippedBoxArea(ring, {0, 0}, {2, 2}), ring.area() / 4, 1e-15);
-  EXPECT_NEAR(clippedBoxArea(ring, {-0.1, -0.1}, {0.1, 0.1}), 0.0, 1e-16); // in the hole
+  const Polygon ring = make_ring(1.0, 0.5, 8);
+  EXPECT_NEAR(clipped_box_area(ring, {-2, -2}, {2, 2}), ring.area(), 1e-15);
+  EXPECT_NEAR(clipped_box_area(ring, {0, 0}, {2, 2}), ring.area() / 4, 1e-15);
+  EXPECT_NEAR(clipped_box_area(ring, {-0.1, -0.1}, {0.1, 0.1}), 0.0, 1e-16); // in the hole
   const Polygon L({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
-  EXPECT_NEAR(clippedBoxArea(L, {0.5, 0.5}, {1.5, 1.5}), 0.75, 1e-15);
+  EXPECT_NEAR(clipped_box_area(L, {0.5, 0.5}, {1.5, 1.5}), 0.75, 1e-15);
 }
 
 TEST(GeometryDiscretize, GmshTrianglesV22AndV41)
 {
   // Unit square with a 0.2 x 0.2 hole; the two files hold the same mesh.
   for (const char *f : {"square_hole_v22.msh", "square_hole_v41.msh"}) {
-    const Mesh2D m = readGmshMesh(kData + f);
+    const Mesh2D m = read_gmsh_mesh(kData + f);
     EXPECT_GT(m.triangles.size(), 10u) << f;
     EXPECT_TRUE(m.quads.empty());
     EXPECT_NEAR(m.area(), 0.96, 1e-14) << f;
-    const Nodes2D n = meshNodes(m);
+    const Nodes2D n = mesh_nodes(m);
     EXPECT_NEAR(sum(n.volume), m.area(), 1e-14) << f;
     // Only vertices of triangles are nodes; none inside the hole.
     for (const Vec2 &p : n.x)
       EXPECT_FALSE(p.x > 0.4 + 1e-12 && p.x < 0.6 - 1e-12 && p.y > 0.4 + 1e-12 &&
                    p.y < 0.6 - 1e-12);
   }
-  EXPECT_EQ(readGmshMesh(kData + "square_hole_v22.msh").triangles.size(),
-            readGmshMesh(kData + "square_hole_v41.msh").triangles.size());
+  EXPECT_EQ(read_gmsh_mesh(kData + "square_hole_v22.msh").triangles.size(),
+            read_gmsh_mesh(kData + "square_hole_v41.msh").triangles.size());
 }
 
 TEST(GeometryDiscretize, GmshQuads)
 {
   // 2 x 1 rectangle, 4 x 2 transfinite quads of 0.5 x 0.5: corner nodes get
   // 1/4 of a quad, edge nodes 2/4, interior nodes 4/4 (bilinear functions).
-  const Mesh2D m = readGmshMesh(kData + "rect_quads_v41.msh");
+  const Mesh2D m = read_gmsh_mesh(kData + "rect_quads_v41.msh");
   EXPECT_EQ(m.quads.size(), 8u);
-  const Nodes2D n = meshNodes(m);
+  const Nodes2D n = mesh_nodes(m);
   EXPECT_EQ(n.size(), 15u);
   EXPECT_NEAR(sum(n.volume), m.area(), 1e-14);
   EXPECT_NEAR(m.area(), 2.0, 1e-12);
@@ -134,7 +143,7 @@ TEST(GeometryDiscretize, GmshHandWrittenAndErrors)
       writeTemp("two.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n"
                            "2 1 0 0\n3 1 1 0\n4 0 1 0\n9 5 5 0\n$EndNodes\n$Elements\n3\n"
                            "1 15 2 0 1 1\n2 2 2 0 1 1 2 3\n3 2 2 0 1 1 3 4\n$EndElements\n");
-  const Nodes2D n = meshNodes(readGmshMesh(ok));
+  const Nodes2D n = mesh_nodes(read_gmsh_mesh(ok));
   ASSERT_EQ(n.size(), 4u); // node 9 belongs to no element
   EXPECT_NEAR(n.volume[0], 1.0 / 3.0, 1e-16);
   EXPECT_NEAR(n.volume[1], 1.0 / 6.0, 1e-16);

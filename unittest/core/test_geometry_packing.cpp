@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Jammed disk/sphere packings (Bhattacharya & Lipton 2023, §7-7.1): exact
 // no-overlap and no-wall-crossing checks, the local jamming criterion of the
 // Bhattacharya & Lipton's (2023) Definition 7.1, packing fractions against known values, radius
@@ -22,7 +31,7 @@ Packing pack2d(std::size_t n, double width, double height, std::uint64_t seed = 
   o.hi[0] = width;
   o.hi[1] = height;
   o.seed = seed;
-  return packSpheres(drawRadii(dist, n, seed), o);
+  return pack_spheres(draw_radii(dist, n, seed), o);
 }
 
 std::vector<std::array<double, 3>> dirs(std::initializer_list<double> degrees)
@@ -61,9 +70,9 @@ std::size_t movableBackboneDisks(const Packing &p, const JammingReport &rep, dou
 
 TEST(GeometryPacking, DistributionsDrawWhatTheySay)
 {
-  const auto u = drawRadii(RadiusDistribution::uniform(0.3, 1.1), 20000, 5);
-  const auto n = drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 5);
-  const auto l = drawRadii(RadiusDistribution::list({0.5, 0.7}), 20000, 5);
+  const auto u = draw_radii(RadiusDistribution::uniform(0.3, 1.1), 20000, 5);
+  const auto n = draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 5);
+  const auto l = draw_radii(RadiusDistribution::list({0.5, 0.7}), 20000, 5);
   auto mean = [](const std::vector<double> &v) {
     return std::accumulate(v.begin(), v.end(), 0.0) / v.size();
   };
@@ -84,8 +93,8 @@ TEST(GeometryPacking, DistributionsDrawWhatTheySay)
   EXPECT_NEAR(sd(n), 0.09, 2e-3);
   EXPECT_NEAR(mean(l), 0.6, 5 * 0.1 / std::sqrt(20000.0));
   // the same seed, the same radii; another seed, others
-  EXPECT_EQ(n, drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 5));
-  EXPECT_NE(n, drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 6));
+  EXPECT_EQ(n, draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 5));
+  EXPECT_NE(n, draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 20000, 6));
 }
 
 TEST(GeometryPacking, BadDistributionsAreRefused)
@@ -103,27 +112,27 @@ TEST(GeometryPacking, BadDistributionsAreRefused)
 TEST(GeometryPacking, JammingCriterionOnHandMadeContacts)
 {
   // 2D: immobile iff the contact directions leave no angular gap >= pi
-  EXPECT_TRUE(directionsBlockEveryMove(dirs({90, 210, 330}), 2));
-  EXPECT_FALSE(directionsBlockEveryMove(dirs({0, 180}), 2));     // slides along y
-  EXPECT_FALSE(directionsBlockEveryMove(dirs({0, 90, 180}), 2)); // free to go down
-  EXPECT_FALSE(directionsBlockEveryMove(dirs({10, 60, 120, 170}), 2));
-  EXPECT_TRUE(directionsBlockEveryMove(dirs({0, 90, 180, 271}), 2));
-  EXPECT_TRUE(directionsBlockEveryMove(dirs({0, 90, 180, 270}), 2)); // a square cage
+  EXPECT_TRUE(directions_block_every_move(dirs({90, 210, 330}), 2));
+  EXPECT_FALSE(directions_block_every_move(dirs({0, 180}), 2));     // slides along y
+  EXPECT_FALSE(directions_block_every_move(dirs({0, 90, 180}), 2)); // free to go down
+  EXPECT_FALSE(directions_block_every_move(dirs({10, 60, 120, 170}), 2));
+  EXPECT_TRUE(directions_block_every_move(dirs({0, 90, 180, 271}), 2));
+  EXPECT_TRUE(directions_block_every_move(dirs({0, 90, 180, 270}), 2)); // a square cage
   // 3D: a tetrahedron's vertex directions block, any three of them do not
   const double s = 1.0 / std::sqrt(3.0);
   std::vector<std::array<double, 3>> tet = {{s, s, s}, {s, -s, -s}, {-s, s, -s}, {-s, -s, s}};
-  EXPECT_TRUE(directionsBlockEveryMove(tet, 3));
+  EXPECT_TRUE(directions_block_every_move(tet, 3));
   tet.pop_back();
-  EXPECT_FALSE(directionsBlockEveryMove(tet, 3));
+  EXPECT_FALSE(directions_block_every_move(tet, 3));
   // the six faces of a cube block; five of them (or four in a plane) do not
   std::vector<std::array<double, 3>> cube = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                              {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-  EXPECT_TRUE(directionsBlockEveryMove(cube, 3));
-  EXPECT_FALSE(directionsBlockEveryMove({cube.begin(), cube.begin() + 4}, 3));
+  EXPECT_TRUE(directions_block_every_move(cube, 3));
+  EXPECT_FALSE(directions_block_every_move({cube.begin(), cube.begin() + 4}, 3));
   cube.pop_back();
-  EXPECT_FALSE(directionsBlockEveryMove(cube, 3));
+  EXPECT_FALSE(directions_block_every_move(cube, 3));
   // collinear opposite contacts leave the perpendicular plane free
-  EXPECT_FALSE(directionsBlockEveryMove({{1, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {-1, 0, 0}}, 3));
+  EXPECT_FALSE(directions_block_every_move({{1, 0, 0}, {-1, 0, 0}, {1, 0, 0}, {-1, 0, 0}}, 3));
 }
 
 TEST(GeometryPacking, DisksNeverOverlapOrCrossAWallAndAreJammed)
@@ -133,7 +142,7 @@ TEST(GeometryPacking, DisksNeverOverlapOrCrossAWallAndAreJammed)
   for (const auto &c : cases) {
     const Packing p = pack2d(c.first, c.second, 200.0);
     ASSERT_EQ(p.centre.size(), c.first);
-    const GapReport g = smallestGaps(p);
+    const GapReport g = smallest_gaps(p);
     // exact: distances minus radii, every pair in reach, every wall incl. the lid
     EXPECT_GE(g.pair, 0.0) << c.first << " disks " << g.pair_i << " " << g.pair_j;
     EXPECT_GE(g.wall, 0.0) << c.first << " disks, disk " << g.wall_i;
@@ -143,7 +152,7 @@ TEST(GeometryPacking, DisksNeverOverlapOrCrossAWallAndAreJammed)
     double area = 0.0;
     for (double r : p.radius) area += M_PI * r * r;
     EXPECT_NEAR(p.fraction, area / ((p.hi[0] - p.lo[0]) * (p.hi[1] - p.lo[1])), 1e-12);
-    const JammingReport j = jammingReport(p, tau);
+    const JammingReport j = jamming_report(p, tau);
     // rattlers: caged disks of no load, a few to ~15 % in jammed polydisperse
     // packings (O'Hern et al. 2003); measured 7-16 % here
     EXPECT_LE(j.rattlers, c.first / 5) << c.first << " disks";
@@ -162,12 +171,12 @@ TEST(GeometryPacking, DisksNeverOverlapOrCrossAWallAndAreJammed)
 
     // rattler growth (Bhattacharya & Lipton 2023, §7.1 step 4): every disk jammed, still no overlap
     Packing q = p;
-    const RattlerGrowth G = growRattlers(q, 1.1, tau);
+    const RattlerGrowth G = grow_rattlers(q, 1.1, tau);
     EXPECT_EQ(G.before, j.rattlers);
-    const JammingReport jq = jammingReport(q, tau);
+    const JammingReport jq = jamming_report(q, tau);
     EXPECT_EQ(jq.rattlers, 0u) << c.first << " disks";
     EXPECT_EQ(G.after, 0u);
-    const GapReport gq = smallestGaps(q);
+    const GapReport gq = smallest_gaps(q);
     EXPECT_GE(gq.pair, 0.0) << c.first << " disks " << gq.pair_i << " " << gq.pair_j;
     EXPECT_GE(gq.wall, 0.0) << c.first << " disks, disk " << gq.wall_i;
     // only rattlers changed, and only grew, within the distribution's range
@@ -198,7 +207,7 @@ TEST(GeometryPacking, RattlerGrowsToTheInscribedCircle)
   p.centre = {{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, h, 0.0}, {0.02, 0.5, 0.0}};
   p.radius = {1.0, 1.0, 1.0, 0.05};
   // cap 1: the unit disks (rattlers too, nothing holds them) cannot grow
-  RattlerGrowth G = growRattlers(p, 1.0, tau);
+  RattlerGrowth G = grow_rattlers(p, 1.0, tau);
   EXPECT_EQ(G.grown, 1u);
   EXPECT_NEAR(p.centre[3][0], 0.0, 1e-8);
   EXPECT_NEAR(p.centre[3][1], h / 3.0, 1e-8);
@@ -216,12 +225,12 @@ TEST(GeometryPacking, RattlerGrowsToTheInscribedCircle)
   b.hi[0] = b.hi[1] = 2.0;
   b.centre = {{0.3, 0.4, 0.0}};
   b.radius = {0.2};
-  G = growRattlers(b, 0.5, tau);
+  G = grow_rattlers(b, 0.5, tau);
   EXPECT_EQ(G.after, 1u);
   EXPECT_EQ(G.capped, 1u);
   EXPECT_NEAR(b.radius[0], 0.5, 1e-9);
   // uncapped it fills the box, touching all four walls: jammed
-  G = growRattlers(b, 5.0, tau);
+  G = grow_rattlers(b, 5.0, tau);
   EXPECT_EQ(G.after, 0u);
   EXPECT_NEAR(b.radius[0], 1.0, 1e-9);
   EXPECT_NEAR(b.centre[0][0], 1.0, 1e-9);
@@ -232,7 +241,7 @@ TEST(GeometryPacking, RattlerGrowsToTheInscribedCircle)
   s3.hi[0] = s3.hi[1] = s3.hi[2] = 2.0;
   s3.centre = {{0.5, 1.3, 0.6}};
   s3.radius = {0.1};
-  G = growRattlers(s3, 5.0, tau);
+  G = grow_rattlers(s3, 5.0, tau);
   EXPECT_EQ(G.after, 0u);
   EXPECT_NEAR(s3.radius[0], 1.0, 1e-9);
 }
@@ -247,11 +256,11 @@ TEST(GeometryPacking, RattlersAreFoundAndBlockingIsNotTrivial)
   p.hi[1] = 5.0;
   p.centre = {{1.0, 2.5, 0.0}};
   p.radius = {1.0};
-  JammingReport j = jammingReport(p, tau);
+  JammingReport j = jamming_report(p, tau);
   EXPECT_EQ(j.rattlers, 1u);
   p.hi[1] = 2.0;
   p.centre = {{1.0, 1.0, 0.0}};
-  j = jammingReport(p, tau); // now touches all four walls
+  j = jamming_report(p, tau); // now touches all four walls
   EXPECT_EQ(j.jammed, 1u);
 }
 
@@ -262,26 +271,26 @@ TEST(GeometryPacking, SpheresNeverOverlapAndAreDense)
   o.hi[0] = o.hi[1] = 10.0;
   o.hi[2] = 100.0;
   const Packing p =
-      packSpheres(drawRadii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 500, 9), o);
-  const GapReport g = smallestGaps(p);
+      pack_spheres(draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 500, 9), o);
+  const GapReport g = smallest_gaps(p);
   EXPECT_GE(g.pair, 0.0);
   EXPECT_GE(g.wall, 0.0);
   EXPECT_LT(g.pair, tau * 0.8);
-  const JammingReport j = jammingReport(p, tau);
+  const JammingReport j = jamming_report(p, tau);
   EXPECT_LE(j.rattlers, 500u / 8);
   EXPECT_GT(j.mean_contacts, 5.0);
   // rattler growth jams every sphere (contact directions in no closed half-space)
   Packing q = p;
-  const RattlerGrowth G = growRattlers(q, 1.1, tau);
+  const RattlerGrowth G = grow_rattlers(q, 1.1, tau);
   EXPECT_EQ(G.before, j.rattlers);
-  EXPECT_EQ(jammingReport(q, tau).rattlers, 0u);
-  EXPECT_GE(smallestGaps(q).pair, 0.0);
-  EXPECT_GE(smallestGaps(q).wall, 0.0);
+  EXPECT_EQ(jamming_report(q, tau).rattlers, 0u);
+  EXPECT_GE(smallest_gaps(q).pair, 0.0);
+  EXPECT_GE(smallest_gaps(q).wall, 0.0);
   // whole box: the wall layers of a 6-diameter-wide box lower it (~0.57);
   // away from the walls (one mean diameter) random close packing: >= 0.60
   EXPECT_GE(p.fraction, 0.55);
   const double lo[3] = {1.6, 1.6, 1.6}, hi[3] = {8.4, 8.4, p.hi[2] - 1.6};
-  EXPECT_GE(fractionInside(p, lo, hi, 60), 0.60);
+  EXPECT_GE(fraction_inside(p, lo, hi, 60), 0.60);
 }
 
 TEST(GeometryPacking, PaperBedsReachThePaperFraction)
@@ -292,7 +301,7 @@ TEST(GeometryPacking, PaperBedsReachThePaperFraction)
   const Packing p = pack2d(1490, 50.0, 100.0, 12);
   EXPECT_GE(p.fraction, 0.80);
   EXPECT_LE(p.hi[1], 100.0);
-  EXPECT_GE(smallestGaps(p).pair, 0.0);
+  EXPECT_GE(smallest_gaps(p).pair, 0.0);
   // no size segregation: neither the radius nor its squared deviation from
   // the mean correlates with x or height (radii and start positions come from
   // one seed; a shared stream once put the extreme sizes at one side)
@@ -336,12 +345,12 @@ TEST(GeometryPacking, PerturbedRowsOfThePeriDemPaper)
   o.gap = 0.2;
   o.perturb = 0.1;
   o.seed = 1;
-  const Packing p = rowPacking(RadiusDistribution::uniform(0.9, 1.1), o);
+  const Packing p = row_packing(RadiusDistribution::uniform(0.9, 1.1), o);
   // the paper's 502 grains: 16 rows of ~31 disks
   EXPECT_GT(p.radius.size(), 480u);
   EXPECT_LT(p.radius.size(), 520u);
   // exact: nothing closer than the gap, to another disk or a wall
-  const GapReport g = smallestGaps(p);
+  const GapReport g = smallest_gaps(p);
   EXPECT_GE(g.pair, o.gap * (1 - 1e-12));
   EXPECT_GE(g.wall, o.gap * (1 - 1e-12));
   // centres not aligned vertically: neighbours in a row are apart by more than
@@ -355,15 +364,15 @@ TEST(GeometryPacking, PerturbedRowsOfThePeriDemPaper)
   EXPECT_LE(spread, 2 * 0.1 * 1.1 + 1e-12);
   // a count limit and the same seed give the first disks of the same bed
   o.max_count = 100;
-  const Packing q = rowPacking(RadiusDistribution::uniform(0.9, 1.1), o);
+  const Packing q = row_packing(RadiusDistribution::uniform(0.9, 1.1), o);
   ASSERT_EQ(q.radius.size(), 100u);
   for (std::size_t i = 0; i < 100; i++) EXPECT_EQ(q.centre[i], p.centre[i]);
   // errors
   o.hi[0] = 2.0;
-  EXPECT_THROW(rowPacking(RadiusDistribution::uniform(0.9, 1.1), o), GeometryError);
+  EXPECT_THROW(row_packing(RadiusDistribution::uniform(0.9, 1.1), o), GeometryError);
   o.hi[0] = 68.5;
   o.gap = -0.1;
-  EXPECT_THROW(rowPacking(RadiusDistribution::uniform(0.9, 1.1), o), GeometryError);
+  EXPECT_THROW(row_packing(RadiusDistribution::uniform(0.9, 1.1), o), GeometryError);
 }
 
 TEST(GeometryPacking, ContainerErrors)
@@ -372,41 +381,41 @@ TEST(GeometryPacking, ContainerErrors)
   o.hi[0] = 1.5;
   o.hi[1] = 10.0;
   // a disk wider than the container
-  EXPECT_THROW(packSpheres({1.0}, o), GeometryError);
+  EXPECT_THROW(pack_spheres({1.0}, o), GeometryError);
   // more disk area than the densest packing of the container can hold
   o.hi[0] = 10.0;
-  EXPECT_THROW(packSpheres(std::vector<double>(40, 1.0), o), GeometryError);
+  EXPECT_THROW(pack_spheres(std::vector<double>(40, 1.0), o), GeometryError);
   // fits by area (fraction 0.86 < 0.907) but the jammed bed (0.79) is higher than the container
   try {
-    packSpheres(drawRadii(RadiusDistribution::uniform(0.45, 0.55), 110, 1), o);
+    pack_spheres(draw_radii(RadiusDistribution::uniform(0.45, 0.55), 110, 1), o);
     ADD_FAILURE() << "expected an error";
   } catch (GeometryError &e) {
     EXPECT_NE(std::string(e.what()).find("high"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(packSpheres({}, o), GeometryError);
-  EXPECT_THROW(packSpheres({0.5, -0.1}, o), GeometryError);
+  EXPECT_THROW(pack_spheres({}, o), GeometryError);
+  EXPECT_THROW(pack_spheres({0.5, -0.1}, o), GeometryError);
 }
 
 TEST(GeometryPacking, SmallestEnclosingCircle)
 {
   // square of side 2: centre, radius sqrt 2
-  EnclosingCircle c = smallestEnclosingCircle({{1, 1}, {-1, 1}, {-1, -1}, {1, -1}, {0.2, 0.3}});
+  EnclosingCircle c = smallest_enclosing_circle({{1, 1}, {-1, 1}, {-1, -1}, {1, -1}, {0.2, 0.3}});
   EXPECT_NEAR(c.x, 0.0, 1e-12);
   EXPECT_NEAR(c.y, 0.0, 1e-12);
   EXPECT_NEAR(c.r, std::sqrt(2.0), 1e-12);
   // obtuse triangle: the longest side is the diameter
-  c = smallestEnclosingCircle({{0, 0}, {4, 0}, {2, 0.5}});
+  c = smallest_enclosing_circle({{0, 0}, {4, 0}, {2, 0.5}});
   EXPECT_NEAR(c.x, 2.0, 1e-12);
   EXPECT_NEAR(c.y, 0.0, 1e-12);
   EXPECT_NEAR(c.r, 2.0, 1e-12);
   // equilateral triangle: circumcircle
-  c = smallestEnclosingCircle({{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}});
+  c = smallest_enclosing_circle({{0, 0}, {1, 0}, {0.5, std::sqrt(3.0) / 2}});
   EXPECT_NEAR(c.r, 1.0 / std::sqrt(3.0), 1e-12);
   // random cloud: all inside, and no smaller circle about the found centre
   PackingRandom rng(4);
   std::vector<std::array<double, 2>> pts(300);
   for (auto &q : pts) q = {rng.uniform() * 3, rng.uniform()};
-  c = smallestEnclosingCircle(pts);
+  c = smallest_enclosing_circle(pts);
   double far = 0.0;
   for (const auto &q : pts) far = std::max(far, std::hypot(q[0] - c.x, q[1] - c.y));
   EXPECT_NEAR(far, c.r, 1e-9);

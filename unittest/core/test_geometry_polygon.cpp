@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Polygon with holes: areas, centroid, point location, transforms, validity.
 #include "peridem_geometry_polygon.h"
 #include "peridem_geometry_predicates.h"
@@ -24,8 +33,8 @@ TEST(GeometryPolygon, OrientationIsNormalized)
 {
   // Outer given clockwise, hole counter-clockwise: both get flipped.
   const Polygon p({{0, 0}, {0, 2}, {2, 2}, {2, 0}}, {{{0.5, 0.5}, {1, 0.5}, {1, 1}, {0.5, 1}}});
-  EXPECT_GT(ringSignedArea(p.outer()), 0.0);
-  EXPECT_LT(ringSignedArea(p.holes()[0]), 0.0);
+  EXPECT_GT(ring_signed_area(p.outer()), 0.0);
+  EXPECT_LT(ring_signed_area(p.holes()[0]), 0.0);
   EXPECT_DOUBLE_EQ(p.area(), 4.0 - 0.25);
   // A repeated closing vertex is dropped.
   EXPECT_EQ(Polygon({{0, 0}, {1, 0}, {1, 1}, {0, 0}}).outer().size(), 3u);
@@ -39,7 +48,7 @@ TEST(GeometryPolygon, CentroidAndBoundingBox)
   EXPECT_DOUBLE_EQ(L.area(), 3.0);
   EXPECT_NEAR(L.centroid().x, (4.0 - 1.5) / 3.0, 1e-15);
   EXPECT_NEAR(L.centroid().y, (4.0 - 1.5) / 3.0, 1e-15);
-  const BoundingBox b = L.boundingBox();
+  const BoundingBox b = L.bounding_box();
   EXPECT_EQ(b.lo, Vec2(0, 0));
   EXPECT_EQ(b.hi, Vec2(2, 2));
   // Hole off-centre shifts the centroid away from it.
@@ -60,7 +69,7 @@ TEST(GeometryPolygon, PointInShape)
   EXPECT_FALSE(p.contains({4.1, 2}));
   EXPECT_FALSE(p.contains({-1e-6, 2}));
   EXPECT_TRUE(p.contains({-1e-13, 2})); // within the default tolerance
-  EXPECT_FALSE(p.containsExact({-1e-13, 2}));
+  EXPECT_FALSE(p.contains_exact({-1e-13, 2}));
   EXPECT_EQ(p.locate({0, 2}), 0);
   EXPECT_EQ(p.locate({2, 2}), -1);
   EXPECT_EQ(p.locate({0.5, 2}), 1);
@@ -76,14 +85,14 @@ TEST(GeometryPolygon, Transforms)
   EXPECT_NEAR(p.centroid().y, 2.0, 1e-14);
   p.rotate(M_PI / 2, {3, 2});
   EXPECT_NEAR(p.area(), 8.0, 1e-13);
-  EXPECT_NEAR(p.boundingBox().hi.x - p.boundingBox().lo.x, 2.0, 1e-13);
-  EXPECT_NEAR(p.boundingBox().hi.y - p.boundingBox().lo.y, 4.0, 1e-13);
+  EXPECT_NEAR(p.bounding_box().hi.x - p.bounding_box().lo.x, 2.0, 1e-13);
+  EXPECT_NEAR(p.bounding_box().hi.y - p.bounding_box().lo.y, 4.0, 1e-13);
   EXPECT_THROW(p.scale(-1.0), GeometryError);
 }
 
 TEST(GeometryPolygon, ValidityErrors)
 {
-  EXPECT_TRUE(Polygon({{0, 0}, {1, 0}, {0, 1}}).validationError().empty());
+  EXPECT_TRUE(Polygon({{0, 0}, {1, 0}, {0, 1}}).validation_error().empty());
   expectInvalid(Polygon({{0, 0}, {1, 0}}), "fewer than 3");
   expectInvalid(Polygon({{0, 0}, {1, 0}, {2, 0}}), "zero area");
   expectInvalid(Polygon({{0, 0}, {2, 2}, {2, 0}, {0, 2}}), "self-intersecting"); // bow tie

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Bond visibility: the pruning of Bhattacharya & Lipton 2023, §5 (extended boundary + cusp
 // bisectors) must keep exactly the bonds whose segment stays in the grain, as decided by the exact
 // reference test, on every built-in shape and resolution.
@@ -33,13 +42,13 @@ Agreement compare(const Polygon &D, double h, double eps, const Vec2 &offset)
 {
   LatticeOptions lo;
   lo.offset = offset;
-  const Nodes2D n = latticeNodes(D, h, lo);
+  const Nodes2D n = lattice_nodes(D, h, lo);
   const SeedPruner seed(D);
   Agreement a;
-  for (const Vec2 &p : n.x) EXPECT_TRUE(D.containsExact(p));
-  for (const Bond &b : pairsWithinHorizon(n.x, eps)) {
+  for (const Vec2 &p : n.x) EXPECT_TRUE(D.contains_exact(p));
+  for (const Bond &b : pairs_within_horizon(n.x, eps)) {
     const Vec2 &p = n.x[b.first], &q = n.x[b.second];
-    const bool exact = segmentInsideExact(D, p, q);
+    const bool exact = segment_inside_exact(D, p, q);
     const bool viaSeed = seed.keeps(p, q);
     ++a.candidates;
     exact ? ++a.kept : ++a.removed;
@@ -62,20 +71,20 @@ TEST(GeometryVisibility, ExactTestKnownCases)
 {
   // L shape: [0,2]x[0,1] U [0,1]x[0,2], reflex corner at (1,1).
   const Polygon L({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
-  EXPECT_TRUE(segmentInsideExact(L, {0.5, 0.5}, {1.5, 0.5}));
-  EXPECT_TRUE(segmentInsideExact(L, {0.5, 1.5}, {1.5, 0.5}));  // through the corner, inside
-  EXPECT_FALSE(segmentInsideExact(L, {0.5, 0.5}, {1.5, 1.5})); // corner to exterior
-  EXPECT_FALSE(segmentInsideExact(L, {1.5, 0.9}, {0.9, 1.5})); // cuts across the notch
-  EXPECT_TRUE(segmentInsideExact(L, {0, 1}, {1, 1}));          // along... interior line
-  EXPECT_TRUE(segmentInsideExact(L, {1, 1}, {2, 1}));          // along an edge
-  EXPECT_TRUE(segmentInsideExact(L, {1, 2}, {1, 0}));          // edge then interior
-  EXPECT_TRUE(segmentInsideExact(L, {0, 0}, {2, 0}));          // whole bottom edge
-  EXPECT_FALSE(segmentInsideExact(L, {2, 1}, {1, 2}));         // boundary to boundary, outside
-  EXPECT_FALSE(segmentInsideExact(L, {0.5, 0.5}, {3, 0.5}));   // end outside
+  EXPECT_TRUE(segment_inside_exact(L, {0.5, 0.5}, {1.5, 0.5}));
+  EXPECT_TRUE(segment_inside_exact(L, {0.5, 1.5}, {1.5, 0.5}));  // through the corner, inside
+  EXPECT_FALSE(segment_inside_exact(L, {0.5, 0.5}, {1.5, 1.5})); // corner to exterior
+  EXPECT_FALSE(segment_inside_exact(L, {1.5, 0.9}, {0.9, 1.5})); // cuts across the notch
+  EXPECT_TRUE(segment_inside_exact(L, {0, 1}, {1, 1}));          // along... interior line
+  EXPECT_TRUE(segment_inside_exact(L, {1, 1}, {2, 1}));          // along an edge
+  EXPECT_TRUE(segment_inside_exact(L, {1, 2}, {1, 0}));          // edge then interior
+  EXPECT_TRUE(segment_inside_exact(L, {0, 0}, {2, 0}));          // whole bottom edge
+  EXPECT_FALSE(segment_inside_exact(L, {2, 1}, {1, 2}));         // boundary to boundary, outside
+  EXPECT_FALSE(segment_inside_exact(L, {0.5, 0.5}, {3, 0.5}));   // end outside
   // Ring: chord across the hole is cut, chord beside it is kept.
-  const Polygon ring = makeRing(1.0, 0.5, 32);
-  EXPECT_FALSE(segmentInsideExact(ring, {-0.75, 0}, {0.75, 0}));
-  EXPECT_TRUE(segmentInsideExact(ring, {-0.3, 0.8}, {0.3, 0.8}));
+  const Polygon ring = make_ring(1.0, 0.5, 32);
+  EXPECT_FALSE(segment_inside_exact(ring, {-0.75, 0}, {0.75, 0}));
+  EXPECT_TRUE(segment_inside_exact(ring, {-0.3, 0.8}, {0.3, 0.8}));
   // The seed pruner agrees on these.
   const SeedPruner s(L);
   EXPECT_TRUE(s.keeps({0.5, 1.5}, {1.5, 0.5}));
@@ -83,20 +92,20 @@ TEST(GeometryVisibility, ExactTestKnownCases)
   EXPECT_FALSE(s.keeps({1.5, 0.9}, {0.9, 1.5}));
   EXPECT_TRUE(s.keeps({1, 1}, {2, 1}));
   EXPECT_FALSE(s.keeps({2, 1}, {1, 2}));
-  EXPECT_EQ(s.cuspBisectors().size(), 1u);
-  EXPECT_EQ(s.extendedBoundary().size(), 6u);
+  EXPECT_EQ(s.cusp_bisectors().size(), 1u);
+  EXPECT_EQ(s.extended_boundary().size(), 6u);
 }
 
 TEST(GeometryVisibility, SeedPruningEqualsExactOnEveryBuiltinShape)
 {
   std::vector<std::pair<std::string, Polygon>> shapes;
-  for (const auto &name : builtinShapeNames()) shapes.emplace_back(name, makeShape(name));
+  for (const auto &name : builtin_shape_names()) shapes.emplace_back(name, make_shape(name));
   for (int seed = 2; seed <= 4; ++seed)
     shapes.emplace_back("perturbed_disk seed " + std::to_string(seed),
-                        makeShape("perturbed_disk", {{"seed", seed}}));
+                        make_shape("perturbed_disk", {{"seed", seed}}));
   for (const char *f : {"L_shape.poly", "star.poly", "plate_with_holes.poly"})
     shapes.emplace_back(
-        f, readPolygonFile(std::string(PERIDEM_SOURCE_DIR) + "/potentials/shapes/" + f));
+        f, read_polygon_file(std::string(PERIDEM_SOURCE_DIR) + "/potentials/shapes/" + f));
 
   std::size_t totalRemoved = 0, totalBoundary = 0;
   for (const auto &[name, base] : shapes) {
@@ -140,12 +149,12 @@ TEST(GeometryVisibility, GapsAreCutConvexShapesAreNot)
        {Case{"plus", 1.0, true}, Case{"ring", 1.0, true}, Case{"notched_plate", 0.5, true},
         Case{"v_notched_plate", 0.5, true}, Case{"neck", 1.0, true}, Case{"disk", 1.0, false},
         Case{"square", 1.0, false}, Case{"hexagon", 1.0, false}}) {
-    const Polygon D = makeShape(c.name);
+    const Polygon D = make_shape(c.name);
     const double h = c.R / 20;
-    const Nodes2D n = latticeNodes(D, h);
-    const auto all = pairsWithinHorizon(n.x, 4 * h);
-    const auto kept = createBonds(D, n.x, 4 * h, Pruning::Seed);
-    const auto keptExact = createBonds(D, n.x, 4 * h, Pruning::Exact);
+    const Nodes2D n = lattice_nodes(D, h);
+    const auto all = pairs_within_horizon(n.x, 4 * h);
+    const auto kept = create_bonds(D, n.x, 4 * h, Pruning::Seed);
+    const auto keptExact = create_bonds(D, n.x, 4 * h, Pruning::Exact);
     EXPECT_EQ(kept, keptExact) << c.name;
     if (c.expectCut)
       EXPECT_GT(all.size() - kept.size(), 0u) << c.name;
@@ -161,28 +170,28 @@ TEST(GeometryVisibility, ExactTestAgreesWithDenseSampling)
   // within 1e-9 of the exterior (cuts by round-off only happen at that scale).
   for (const char *name : {"plus", "ring", "perturbed_disk", "notched_plate", "neck"}) {
     const Polygon D =
-        makeShape(name, std::string(name) == "neck"
-                            ? std::map<std::string, double>{{"width", 1.6}, {"neck_width", 0.2}}
-                            : std::map<std::string, double>{});
+        make_shape(name, std::string(name) == "neck"
+                             ? std::map<std::string, double>{{"width", 1.6}, {"neck_width", 0.2}}
+                             : std::map<std::string, double>{});
     const double h = 0.05;
-    const Nodes2D n = latticeNodes(D, h);
+    const Nodes2D n = lattice_nodes(D, h);
     std::size_t removed = 0;
-    for (const Bond &b : pairsWithinHorizon(n.x, 4 * h)) {
+    for (const Bond &b : pairs_within_horizon(n.x, 4 * h)) {
       const Vec2 &p = n.x[b.first], &q = n.x[b.second];
       bool clearlyOut = false, nearOut = false;
       for (int k = 1; k < 64; ++k) {
         const Vec2 z = p + (q - p) * (k / 64.0);
-        if (D.locate(z) < 0) (D.boundaryDistance(z) > 1e-9 ? clearlyOut : nearOut) = true;
-        if (D.boundaryDistance(z) <= 1e-9) nearOut = true;
+        if (D.locate(z) < 0) (D.boundary_distance(z) > 1e-9 ? clearlyOut : nearOut) = true;
+        if (D.boundary_distance(z) <= 1e-9) nearOut = true;
       }
-      const bool inside = segmentInsideExact(D, p, q);
+      const bool inside = segment_inside_exact(D, p, q);
       removed += !inside;
       if (clearlyOut) EXPECT_FALSE(inside) << name;
       if (!inside) EXPECT_TRUE(clearlyOut || nearOut) << name;
     }
     EXPECT_GT(removed, 0u) << name;
   }
-  const Polygon neck = makeShape("neck", {{"width", 1.6}, {"neck_width", 0.2}});
-  const Nodes2D n = latticeNodes(neck, 0.05);
-  EXPECT_LT(createBonds(neck, n.x, 0.2).size(), pairsWithinHorizon(n.x, 0.2).size());
+  const Polygon neck = make_shape("neck", {{"width", 1.6}, {"neck_width", 0.2}});
+  const Nodes2D n = lattice_nodes(neck, 0.05);
+  EXPECT_LT(create_bonds(neck, n.x, 0.2).size(), pairs_within_horizon(n.x, 0.2).size());
 }

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // The linear peridynamic solid's constants (peridem_lps_law.h): the strain energy density
 // of a homogeneous small strain, integrated over the horizon by quadrature, equals linear
 // elasticity's for the given K and G (3D; 2D plane strain and plane stress), for every

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Tests of the analytic wall regions and wall forces (src/peridem_wall_geometry.h) against
 // independent adaptive quadrature of chord lengths, Bhattacharya & Lipton's (2023) printed formulas
 // and limits.

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // A LAMMPS instance with the PERIDEM styles for GoogleTest, driven through
 // the input interface; screen and log output off unless PERIDEM_TEST_VERBOSE.
 #ifndef PERIDEM_TEST_LAMMPS_FIXTURE_H

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Helpers of the comparisons with LAMMPS's stock peridynamics (peri/pmb,
 // peri/lps): the same nodes in two LAMMPS instances, node by node (by tag).
 // Stock peri styles work with force densities: their force is ours over the

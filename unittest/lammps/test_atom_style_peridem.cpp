@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // atom_style peridem: registration, survival of `clear`, and round trips of
 // grain IDs, volumes, masses, reference positions and bonds through
 // write_data/read_data and write_restart/read_restart.
@@ -179,8 +188,8 @@ TEST_F(AtomStylePeridem, CreateAtomsSetsReferencePositionToPosition)
 
 TEST(PeridemRegistration, VersionStringsMustMatch)
 {
-  EXPECT_TRUE(PERIDEM::version_mismatch_message(LAMMPS_VERSION, LAMMPS_VERSION).empty());
-  const std::string msg = PERIDEM::version_mismatch_message("29 Sep 2021", "7 Feb 2024");
+  EXPECT_TRUE(peridem_lmp::version_mismatch_message(LAMMPS_VERSION, LAMMPS_VERSION).empty());
+  const std::string msg = peridem_lmp::version_mismatch_message("29 Sep 2021", "7 Feb 2024");
   EXPECT_NE(msg.find("compiled against LAMMPS version '29 Sep 2021'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("'7 Feb 2024'"), std::string::npos) << msg;
   EXPECT_STREQ(peridem_lammps_version(), LAMMPS_VERSION);
@@ -196,7 +205,7 @@ TEST(PeridemRegistrationDeathTest, OtherLammpsVersionIsRefused)
         dup2(STDERR_FILENO, STDOUT_FILENO);
         try {
           LAMMPS *lmp = make_lammps({}, true);
-          PERIDEM::register_styles(lmp, "1 Jan 2000");
+          peridem_lmp::register_styles(lmp, "1 Jan 2000");
         } catch (LAMMPSException &) {
           exit(1);
         }

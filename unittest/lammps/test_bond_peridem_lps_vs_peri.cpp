@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // bond_style peridem/lps against LAMMPS's own pair_style peri/lps on the same
 // nodes with the same constants (K, G, s0 with alpha = 0, horizon, influence
 // 1/r, the linear partial-volume ramp). peri/lps works with force, energy

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // bond_style peridem against LAMMPS's own pair_style peri/pmb on the same
 // nodes with the same constants (c, s0 with alpha = 0, horizon, the linear
 // partial-volume ramp). peri/pmb works with force and mass densities, so

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // compute peridem/bed against hand values: three 11 x 11 node squares
 // (side 1, spacing 0.1, volume 1.21 each) on the floor of a 6 x 8
 // container and a fourth on the middle one; a ring grain for the volume

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // compute peridem/damage against hand counts: a 4-node grain (a line with
 // nearest and next-nearest bonds) loses two bonds when its last node is
 // pulled away; a 3-node grain stays intact. Checked with newton_bond on and

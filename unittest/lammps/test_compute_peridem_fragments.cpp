@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // compute peridem/fragments against hand classification: grains cut by
 // cut_peridem_bonds along straight lines between node rows fall into pieces
 // whose nodes are known from their reference positions alone. Grain 1

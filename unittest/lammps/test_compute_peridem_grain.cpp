@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // compute peridem/grain against hand values: a 21 x 11 node rectangle
 // (width 2, height 1, spacing 0.1) turned by 30 degrees, then rotated by
 // 45 degrees about the origin and moved across the periodic boundary; a

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // Conservation in a closed system: the two grains of the force-style tests
 // (unittest/force-styles/tests/data.peridem: 54 nodes, 370 bonds of
 // bond_style peridem, approaching each other with random node velocities)

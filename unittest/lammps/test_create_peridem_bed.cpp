@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // create_peridem_bed: grains placed from a jammed bed file are at
 // least R_c apart from each other and from the walls at step 0 (grain-shape
 // Bhattacharya & Lipton 2023, §7.1 step 5), each fills its security disk (diameter matched), the
@@ -146,7 +155,7 @@ TEST_F(CreatePeridemBed, BedFileLinesAreTheJammedDisksShrunkByHalfRc)
   }
   // every disk jammed (rattlers grown, the default): the file's disks, grown
   // back by R_c/2 in the container inset by R_c/2 up to the bed's lid, pass
-  // the criterion of jammingReport with the packing tolerance
+  // the criterion of jamming_report with the packing tolerance
   peridem::Packing p;
   p.dimension = 2;
   std::ifstream in(dir + "bed.txt");
@@ -165,7 +174,7 @@ TEST_F(CreatePeridemBed, BedFileLinesAreTheJammedDisksShrunkByHalfRc)
     p.centre.push_back({b.x, b.y, 0.0});
     p.radius.push_back(b.r + Rc / 2);
   }
-  EXPECT_EQ(peridem::jammingReport(p, 1e-3).rattlers, 0u);
+  EXPECT_EQ(peridem::jamming_report(p, 1e-3).rattlers, 0u);
   EXPECT_NE(header.find(" after (0 capped"), std::string::npos) << header;
   // the same seed writes the same file; placing it uses the file's angles
   command("create_peridem_bed " + dir + "again.txt count 80 radius normal 0.8 0.09 0.4 1.1 " +

@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // create_peridem_grains and cut_peridem_bonds: node counts and
 // volumes, the same bonds as the core geometry library, no bond across a
 // notch or crack, grain IDs, 3D and Gmsh grains. Ranks: 1 here; 1 vs 2 ranks
@@ -77,7 +86,7 @@ TEST_F(CreatePeridemGrainsTest, CellVolumesAreSpacingSquared)
 {
   command(box2d);
   command("create_peridem_grains 1 disk radius 1 spacing 0.1 horizon 0.3 density 2.5 at 0 0 0");
-  const auto nodes = peridem::latticeNodes(peridem::makeShape("disk", {}), 0.1);
+  const auto nodes = peridem::lattice_nodes(peridem::make_shape("disk", {}), 0.1);
   ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(nodes.size()));
   EXPECT_NEAR(sum_volume(lmp), nodes.size() * 0.01, 1e-12);
   for (int i = 0; i < lmp->atom->nlocal; i++) {
@@ -92,7 +101,7 @@ TEST_F(CreatePeridemGrainsTest, ExactVolumesSumToShapeArea)
   command(box2d);
   command("create_peridem_grains 2 plus radius 1 arm_width 0.4 spacing 0.07 horizon 0.21 "
           "density 1 at 0.5 -0.25 0 rotate 33 volume exact");
-  const double area = peridem::makeShape("plus", {{"radius", 1}, {"arm_width", 0.4}}).area();
+  const double area = peridem::make_shape("plus", {{"radius", 1}, {"arm_width", 0.4}}).area();
   EXPECT_NEAR(sum_volume(lmp), area, 1e-12 * area);
 }
 
@@ -101,8 +110,8 @@ TEST_F(CreatePeridemGrainsTest, BondsEqualCoreLibraryAndNodesArePlaced)
   command(box2d);
   command("create_peridem_grains 1 notched_plate spacing 0.05 horizon 0.15 density 1 "
           "at 1 -0.5 0 rotate 30");
-  peridem::Polygon shape = peridem::makeShape("notched_plate", {});
-  const peridem::Grain2D g = peridem::discretizeGrain(shape, 0.05, 0.15);
+  peridem::Polygon shape = peridem::make_shape("notched_plate", {});
+  const peridem::Grain2D g = peridem::discretize_grain(shape, 0.05, 0.15);
   ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(g.nodes.size()));
   EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));
   EXPECT_EQ(lmp->atom->nbonds, static_cast<bigint>(g.bonds.size()));
@@ -129,13 +138,13 @@ TEST_F(CreatePeridemGrainsTest, NoBondLeavesNonconvexShapes)
             sh.second);
     // in the grain frame (node k has atom ID tag0 + k), where the nodes on the
     // boundary lie exactly on it
-    const peridem::Polygon shape = peridem::makeShape(sh.first, {});
-    const auto nodes = peridem::latticeNodes(shape, 0.06);
+    const peridem::Polygon shape = peridem::make_shape(sh.first, {});
+    const auto nodes = peridem::lattice_nodes(shape, 0.06);
     int checked = 0;
     for (const auto &b : bond_set(lmp)) {
       if (b.first < tag0 || b.first >= tag0 + static_cast<tagint>(nodes.size())) continue;
       EXPECT_TRUE(
-          peridem::segmentInsideExact(shape, nodes.x[b.first - tag0], nodes.x[b.second - tag0]))
+          peridem::segment_inside_exact(shape, nodes.x[b.first - tag0], nodes.x[b.second - tag0]))
           << sh.first << " bond " << b.first << "-" << b.second;
       checked++;
     }
@@ -165,7 +174,7 @@ TEST_F(CreatePeridemGrainsTest, NotchKeywordAndCutCommandRemoveCrossingBonds)
   std::set<TagBond> first, second;
   for (const auto &b : bond_set(lmp)) {
     const auto &cut = b.first <= n ? left : right;
-    EXPECT_FALSE(peridem::bondCrossesCut(x0_of(lmp, b.first), x0_of(lmp, b.second), cut));
+    EXPECT_FALSE(peridem::bond_crosses_cut(x0_of(lmp, b.first), x0_of(lmp, b.second), cut));
     if (b.first <= n)
       first.emplace(b);
     else
@@ -203,7 +212,7 @@ TEST_F(CreatePeridemGrainsTest, MaterialGivesDensityAndHorizon)
   command(grain_box("si", 2, "-0.01 0.01 -0.01 0.01 -0.001 0.001", 60));
   command("create_peridem_grains 1 disk radius 0.002 spacing 0.0002 at 0 0 0 material " +
           std::string(PERIDEM_SOURCE_DIR) + "/potentials/peridem_M1.peridem M1");
-  const peridem::Grain2D g = peridem::discretizeShape("disk", {{"radius", 0.002}}, 0.0002, 0.6e-3);
+  const peridem::Grain2D g = peridem::discretize_shape("disk", {{"radius", 0.002}}, 0.0002, 0.6e-3);
   EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));
   EXPECT_DOUBLE_EQ(lmp->atom->rmass[0], 1200 * lmp->atom->vfrac[0]);
 }
@@ -213,15 +222,15 @@ TEST_F(CreatePeridemGrainsTest, SolidAndExtrudedGrainsEqualCoreLibrary)
   command(grain_box("lj", 3, "-3 3 -3 3 -3 3", 40));
   command("create_peridem_grains 1 sphere radius 1 spacing 0.2 horizon 0.4 density 1 at -1.5 0 0");
   const auto sphere =
-      peridem::discretizeGrain3D(peridem::Shape3D::sphere(1.0), 0.2, 0.4, peridem::Pruning::Seed);
+      peridem::discretize_grain_3d(peridem::Shape3D::sphere(1.0), 0.2, 0.4, peridem::Pruning::Seed);
   ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(sphere.nodes.size()));
   EXPECT_EQ(bond_set(lmp), core_bonds(sphere.bonds, 1));
   EXPECT_NEAR(sum_volume(lmp), sphere.nodes.size() * 0.008, 1e-12);
 
   command("create_peridem_grains 1 plus extrude 0.6 spacing 0.1 horizon 0.2 density 1 at 1.5 0 0");
-  const auto plus =
-      peridem::discretizeGrain3D(peridem::Shape3D::extrusion(peridem::makeShape("plus", {}), 0.6),
-                                 0.1, 0.2, peridem::Pruning::Seed);
+  const auto plus = peridem::discretize_grain_3d(
+      peridem::Shape3D::extrusion(peridem::make_shape("plus", {}), 0.6), 0.1, 0.2,
+      peridem::Pruning::Seed);
   std::set<TagBond> mine;
   const tagint tag0 = sphere.nodes.size() + 1;
   for (const auto &b : bond_set(lmp))
@@ -267,8 +276,8 @@ TEST_F(CreatePeridemGrainsTest, GmshGrainVolumesSumToMeshArea)
   const std::string mesh =
       std::string(PERIDEM_SOURCE_DIR) + "/unittest/core/data/square_hole_v41.msh";
   command("create_peridem_grains 1 gmsh " + mesh + " horizon 0.5 density 1 at 0 0 0");
-  const peridem::Mesh2D m = peridem::readGmshMesh(mesh);
-  const peridem::Grain2D g = peridem::meshGrain(m, 0.5);
+  const peridem::Mesh2D m = peridem::read_gmsh_mesh(mesh);
+  const peridem::Grain2D g = peridem::mesh_grain(m, 0.5);
   EXPECT_EQ(lmp->atom->natoms, static_cast<bigint>(g.nodes.size()));
   EXPECT_NEAR(sum_volume(lmp), m.area(), 1e-12 * m.area());
   EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));

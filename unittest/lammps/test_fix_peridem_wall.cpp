@@ -1,3 +1,12 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
 // fix peridem/wall: validation through LAMMPS (drop and rebound, damping,
 // corner continuity, settled reaction, servo, moving walls, restart, lost nodes).
 // The formulas themselves are tested in unittest/core/test_wall_geometry.cpp.

@@ -1,4 +1,13 @@
 /* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    A LAMMPS host that loads plugins the way the PLUGIN package of LAMMPS
    29Sep2021 does ("plugin load FILE": dlopen with RTLD_NOW | RTLD_GLOBAL,
    lammpsplugin_init(lmp, handle, regfunc), and a regfunc that puts each

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Source hygiene of src/ that an upstream LAMMPS reviewer checks by grep:
 #  - no M_PI (LAMMPS glue: MathConst::MY_PI; core: peridem::kPi in peridem_math.h),
 #    no GCC builtins, no LAMMPS_VERSION_NUMBER (not a LAMMPS macro);

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # expect_pass.sh [--regex REGEX] COMMAND...: passes when COMMAND exits with
 # code 0, prints a line matching REGEX (extended regex, default PERIDEM-PASS)
 # and prints neither PERIDEM-FAIL nor a LAMMPS ERROR line nor a crash. (ctest's PASS_REGULAR_EXPRESSION alone ignores the exit code, so a

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # plugin_vs_driver.sh HOST PLUGIN LMP INPUT POTENTIALS OUT_DIR NP
 # Runs INPUT through the plugin host with PLUGIN (every PERIDEM style from
 # peridemplugin.so) and through lmp_peridem, on NP ranks, and requires the

@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # run_example.sh LMP EXAMPLE_DIR INPUT OUT_DIR NP [NP...]
 # Runs the example once per rank count, each in a fresh copy of the example
 # directory, and requires the thermo output of every run to equal that of the

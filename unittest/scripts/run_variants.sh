@@ -1,4 +1,12 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # run_variants.sh LMP EXAMPLE_DIR INPUT OUT_DIR "COMMON ARGS" "NP [ARGS]"...
 # Runs the example once per variant (a rank count and more lmp arguments),
 # each in a fresh copy of the example directory, and requires the thermo

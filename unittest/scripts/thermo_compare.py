@@ -1,4 +1,12 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 """thermo_compare.py LOG [LOG...]: the thermo tables of every log must equal
 those of the first log, value by value, to a relative tolerance (default
 1e-9, --rtol) with an absolute floor (--atol, default 1e-12). Exits 1 with

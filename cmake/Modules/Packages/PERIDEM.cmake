@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # PERIDEM as a package of a LAMMPS source tree (PKG_PERIDEM=ON): LAMMPS's CMake compiles
 # src/PERIDEM/*.cpp into liblammps itself; this module adds what those files need.
 # scripts/build_lammps_2025.sh copies it to <lammps>/cmake/Modules/Packages/ and lists

@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # fix peridem/bonds forces a neighbour-list rebuild at the step after a bond
 # breaks, in every run: a grain struck hard enough to break
 # bonds ends with the same energy and bonds with LAMMPS's default neighbour

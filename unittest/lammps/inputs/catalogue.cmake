@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Bad-input catalogue (doc/errors.md): one bad command on a valid two-grain system
 # (catalogue/base.in reads unittest/force-styles/tests/data.peridem); each test checks
 # the exit code and the stable part of the message (command, keyword, value).

@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # The grain-shape paper's fracture experiments as examples (issue 14):
 # examples/notch-fracture (§6.4), examples/kalthoff-winkler (§6.2),
 # examples/plus-collision (§6.3).

@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Material, polygon and Gmsh files are read on rank 0 and broadcast, and found as LAMMPS
 # finds potential files: named without a folder, they come from LAMMPS_POTENTIALS (a folder
 # made here, away from the working folder); 1 and 2 ranks

@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # Examples run at 1 and 2 MPI ranks with identical thermo output.
 peridem_add_example_test(grain_block grain-block in.grain_block 1 2)
 

@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # create_peridem_grains / cut_peridem_bonds
 
 # examples: the same nodes, volumes, grain IDs and bonds on 1 and 2 ranks

@@ -1,3 +1,11 @@
+# ----------------------------------------------------------------------
+# PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+#
+# Copyright (C) 2026 The PERIDEM developers.
+# This software is distributed under the GNU General Public License,
+# version 2; see the LICENSE file in the top-level PERIDEM directory.
+# SPDX-License-Identifier: GPL-2.0-only
+# ----------------------------------------------------------------------
 # restart files of an older PERIDEM format are refused with a clear message
 # (restart_format/make_old.in wrote them with the build of commit 970bea6)
 peridem_add_error_test(restart_old_bond ${_in}/restart_format/read_old.in
