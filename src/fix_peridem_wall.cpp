@@ -31,7 +31,6 @@
 #include "error.h"
 #include "input.h"
 #include "modify.h"
-#include "neighbor.h"
 #include "pair.h"
 #include "respa.h"
 #include "update.h"
@@ -483,16 +482,7 @@ void FixPeridemWall::post_force(int vflag)
   const int nlocal = atom->nlocal;
   double power = 0.0;
 
-  // in a run, only the nodes within reach of a wall (looping over every
-  // node cost 17 % of a 40-grain bed's step); in setup and
-  // minimisation, and without LAMMPS's distance check, every node
-  const bool use_near = !in_setup && update->whichflag == 1 && neighbor->dist_check;
-  if (use_near && near_stale()) build_near(box);
-  const int ncand = use_near ? (int)near.size() : nlocal;
-  const int *cand = near.data();
-
-  for (int ii = 0; ii < ncand; ii++) {
-    const int i = use_near ? cand[ii] : ii;
+  for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const peridem::ContactParams &params =
         contact_from_pair ? type_params[type[i]] : contact.params;
@@ -563,48 +553,6 @@ void FixPeridemWall::post_force(int vflag)
   local[DISSIPATED] = dissipated_local;
   reduced = 0;
   if (servo_any) servo_control();
-}
-
-/* ----------------------------------------------------------------------
-   the list of nodes near a wall is rebuilt when LAMMPS reneighbours (atoms
-   may have moved to other ranks or been sorted) or when a wall has moved
-   by more than half the skin since the list was built. LAMMPS's distance
-   check keeps every node within half the skin of where it was at the last
-   reneighbouring, so between two reneighbourings a node moves by at most
-   one skin: a node further than Rc + 1.5 skin from every wall stays beyond
-   Rc of it until the list is rebuilt
-------------------------------------------------------------------------- */
-
-bool FixPeridemWall::near_stale() const
-{
-  if (neighbor->ncalls != near_ncalls || atom->nlocal != near_nlocal) return true;
-  for (int w = 0; w < nwalls; w++)
-    if (walls[w].active && std::fabs(walls[w].pos - near_pos[w]) > near_slack) return true;
-  return false;
-}
-
-void FixPeridemWall::build_near(const peridem::WallBox &box)
-{
-  double rc_max = contact.params.Rc;
-  if (contact_from_pair)
-    for (std::size_t t = 1; t < type_params.size(); t++)
-      rc_max = std::max(rc_max, type_params[t].Rc);
-  const double reach = rc_max + 1.5 * neighbor->skin;
-  double **x = atom->x;
-  const int nlocal = atom->nlocal;
-  near.clear();
-  for (int i = 0; i < nlocal; i++) {
-    for (int w = 0; w < nwalls; w++) {
-      if (box.active[w] && peridem::wall_distance(box, w, x[i]) < reach) {
-        near.push_back(i);
-        break;
-      }
-    }
-  }
-  near_ncalls = neighbor->ncalls;
-  near_nlocal = nlocal;
-  for (int w = 0; w < nwalls; w++) near_pos[w] = walls[w].pos;
-  near_slack = 0.5 * neighbor->skin;
 }
 
 void FixPeridemWall::reduce()
