@@ -16,13 +16,13 @@ Runs in.restitution for eps_n = 1, 0.95, 0.9, 0.85, 0.8 (damping centroid, C = 1
       centroid_range 1.006 R_c); Jha et al.'s (2021) code also switches it on before the contact
       (centres closer than R_1 + R_2 + 1.01 R_c). 1.006 is a CALIBRATION: it was fitted to
       Jha et al.'s (2021) Table 2, so agreement with that table validates nothing.
-Writes restitution.dat (eps_n, seed C_R, ours (a), ours (b)) and restitution.png (if
+Writes restitution.dat (eps_n, C_R of Jha et al. 2021, ours (a), ours (b)) and restitution.png (if
 matplotlib is installed), and checks when --check is given (exit 1 on failure):
   independent bounds: C_R(1) within 1% of 1 (no damping: only the energy left as grain
   vibration is missing), C_R strictly decreasing with eps_n in both series, (b) <= (a)
   for every eps_n (the earlier dashpot acts over a longer time, so it dissipates more),
   (a) never below Jha et al.'s (2021) minus --tol (Jha et al.'s (2021) dashpot also starts earlier);
-  calibration: (b) within --seed-tol of Jha et al.'s (2021) Table 2 (the table it was fitted to;
+  calibration: (b) within --paper-tol of Jha et al.'s (2021) Table 2 (the table it was fitted to;
   this only guards the calibration against changes).
 
 usage: run_restitution.py [--lmp PATH] [--np N] [--potentials DIR] [--check] [--tol T]
@@ -35,7 +35,7 @@ import subprocess
 import sys
 
 EPS = [1.0, 0.95, 0.9, 0.85, 0.8]
-SEED = [1.0, 0.946, 0.893, 0.845, 0.796]      # Table 2 of the seed
+PAPER = [1.0, 0.946, 0.893, 0.845, 0.796]     # Jha et al. 2021, Table 2
 ONSET = 1.006                                  # (b): centroid_range = ONSET x R_c (calibrated)
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -46,7 +46,7 @@ ap.add_argument("--potentials", default=os.path.join(here, "../../potentials"))
 ap.add_argument("--out", default=".")
 ap.add_argument("--check", action="store_true")
 ap.add_argument("--tol", type=float, default=0.01)
-ap.add_argument("--seed-tol", type=float, default=0.005)
+ap.add_argument("--paper-tol", type=float, default=0.005)
 ap.add_argument("extra", nargs="*")
 a = ap.parse_args()
 
@@ -73,13 +73,13 @@ for k, e in enumerate(EPS):
     ours.append(restitution(e, 0))
     # without damping the onset plays no part: the same run
     early.append(ours[-1] if e == 1.0 else restitution(e, ONSET))
-    print("eps_n %-5g seed C_R %.3f  ours (a) %.4f  (b) %.4f" % (e, SEED[k], ours[-1], early[-1]),
+    print("eps_n %-5g paper C_R %.3f  ours (a) %.4f  (b) %.4f" % (e, PAPER[k], ours[-1], early[-1]),
           flush=True)
 
 with open(os.path.join(a.out, "restitution.dat"), "w") as f:
     f.write("# eps_n  C_R(Jha et al. 2021, Table 2)  C_R(PERIDEM, damping centroid C=100: (a) onset R_c, "
             "(b) onset %g R_c)\n" % ONSET)
-    for e, s, o, b in zip(EPS, SEED, ours, early):
+    for e, s, o, b in zip(EPS, PAPER, ours, early):
         f.write("%-6g %8.3f %10.4f %10.4f\n" % (e, s, o, b))
 
 PLOT = r"""
@@ -88,9 +88,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 rows = [list(map(float, l.split())) for l in open(sys.argv[1]) if l.strip() and l[0] != "#"]
-eps, seed, ours, early = zip(*rows)
+eps, paper, ours, early = zip(*rows)
 fig, ax = plt.subplots(figsize=(5, 4))
-ax.plot(eps, seed, "s--", label="Jha et al. 2021, Table 2", markersize=9)
+ax.plot(eps, paper, "s--", label="Jha et al. 2021, Table 2", markersize=9)
 ax.plot(eps, ours, "o-", label="PERIDEM, dashpot on below R_c (eq. 27)")
 ax.plot(eps, early, "^-", label="PERIDEM, dashpot on below 1.006 R_c")
 ax.plot(eps, eps, ":", color="gray", label="C_R = eps_n")
@@ -118,16 +118,16 @@ if a.check:
         if b > o + 1e-12 or (e < 1.0 and not b < o):
             bad.append("(b) C_R(%g) = %g is not below (a) %g: the earlier dashpot must dissipate "
                        "more" % (e, b, o))
-    for e, o, s in zip(EPS, ours, SEED):
+    for e, o, s in zip(EPS, ours, PAPER):
         if o < s - a.tol:
             bad.append("(a) C_R(%g) = %g damps more than Jha et al.'s (2021) %g" % (e, o, s))
-    for e, b, s in zip(EPS, early, SEED):
-        if abs(b - s) > a.seed_tol:
+    for e, b, s in zip(EPS, early, PAPER):
+        if abs(b - s) > a.paper_tol:
             bad.append("(b) C_R(%g) = %g differs from Jha et al.'s (2021) %g by more than %g (calibration "
-                       "of centroid_range %g lost)" % (e, b, s, a.seed_tol, ONSET))
+                       "of centroid_range %g lost)" % (e, b, s, a.paper_tol, ONSET))
     if bad:
         print("PERIDEM-FAIL " + "; ".join(bad))
         sys.exit(1)
     print("PERIDEM-PASS restitution bounds (C_R(1) = 1, decreasing, (b) <= (a), (a) not below "
           "the paper); calibration: Jha et al.'s (2021) Table 2 to %g with centroid_range %g R_c"
-          % (a.seed_tol, ONSET))
+          % (a.paper_tol, ONSET))

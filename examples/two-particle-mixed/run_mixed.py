@@ -7,21 +7,21 @@
 # version 2; see the LICENSE file in the top-level PERIDEM directory.
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
-"""Coefficient of restitution of two particles of mixed sizes and materials (PeriDEM seed, Jha,
-Desai, Bhattacharya & Lipton, Sec. 4.1, Table 3), with examples/restitution/in.restitution.
+"""Coefficient of restitution of two particles of mixed sizes and materials (Jha,
+Desai, Bhattacharya & Lipton 2021, Sec. 4.1, Table 3), with examples/restitution/in.restitution.
 
-The seed's tests 6-10: radii (R1, R2) = (top, bottom) in mm and materials (top, bottom) of its
+Jha et al.'s (2021) tests 6-10: radii (R1, R2) = (top, bottom) in mm and materials (top, bottom) of its
 Table 1 (potentials/peridem_2021_table1.peridem: M1 K = 0.0216 GPa, M2 K = 2 GPa), elastic
 (eps_n = 1) and eps_n = 0.95 with damping between grain centroids (C = 100), H0 = 1 mm,
-h = 0.1423 mm, horizon 0.6 mm, R_c = 0.95 h, K_n = 18 k/(pi eps^5) (the seed's code's 2D form).
-Reading of the seed: P1 is the top particle (its Fig. 19 and 20 place P1 above P2), so (R1, R2)
+h = 0.1423 mm, horizon 0.6 mm, R_c = 0.95 h, K_n = 18 k/(pi eps^5) (the 2D form of Jha et al.'s (2021) code).
+Our reading of the paper: P1 is the top particle (its Fig. 19 and 20 place P1 above P2), so (R1, R2)
 and the material pair are (top, bottom).
 
 The dashpot switches on below 1.006 R_c (centroid_range), the CALIBRATION of
-examples/restitution fitted to the seed's Table 2 (M1, equal radii); here it is applied
+examples/restitution fitted to Jha et al.'s (2021) Table 2 (M1, equal radii); here it is applied
 unchanged to other sizes and materials, so agreement with Table 3 would be a prediction.
 Time steps: 50 ns with M1 only (as Table 2), 15 ns with M2 (our estimate recommends 18.3 ns for
-M2 against M2; the seed used 20 ns); the falling particle starts 0.25 mm (M1) or 0.16 mm (M2,
+M2 against M2; Jha et al. 2021 used 20 ns); the falling particle starts 0.25 mm (M1) or 0.16 mm (M2,
 stiffer and faster, to save steps) above the contact with the speed of the 1 mm fall.
 
 Writes mixed.dat and mixed.png (matplotlib); --check asserts for the cases run: C_R(eps_n = 1)
@@ -38,8 +38,8 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 rest = os.path.normpath(os.path.join(here, "../restitution"))
-# test: (R_top mm, R_bottom mm, material top, material bottom, seed C_R(1), seed C_R(0.95))
-SEED = {
+# test: (R_top mm, R_bottom mm, material top, material bottom, C_R(1) and C_R(0.95) of Jha et al. 2021, Table 3)
+PAPER = {
     6: (3, 1, "M1", "M1", 1.0, 0.935),
     7: (1, 1, "M2", "M2", 1.0, 0.744),
     8: (3, 1, "M2", "M2", 1.0, 0.716),
@@ -55,11 +55,14 @@ ap.add_argument("--cases", default="6,7,8,9,10")
 ap.add_argument("--out", default=".")
 ap.add_argument("--check", action="store_true")
 a = ap.parse_args()
+a.lmp = os.path.abspath(a.lmp)  # the runs start in --out
+a.potentials = os.path.abspath(a.potentials)
+a.out = os.path.abspath(a.out)
 os.makedirs(a.out, exist_ok=True)
 
 
 def restitution(test, eps):
-    rt, rb, mt, mb, _, _ = SEED[test]
+    rt, rb, mt, mb, _, _ = PAPER[test]
     m2 = "M2" in (mt, mb)
     log = os.path.join(a.out, "log.test%d_eps_%g" % (test, eps))
     cmd = [a.lmp, "-in", os.path.join(rest, "in.restitution"), "-echo", "none", "-screen", "none",
@@ -76,16 +79,16 @@ def restitution(test, eps):
 
 rows = []
 for test in [int(t) for t in a.cases.split(",")]:
-    rt, rb, mt, mb, s1, s95 = SEED[test]
+    rt, rb, mt, mb, s1, s95 = PAPER[test]
     c1, n1 = restitution(test, 1.0)
     c95, n95 = restitution(test, 0.95)
     rows.append((test, rt, rb, mt, mb, s1, c1, s95, c95))
-    print("test %2d (%g,%g) (%s,%s): C_R(1) seed %.3f ours %.4f | C_R(0.95) seed %.3f ours %.4f"
+    print("test %2d (%g,%g) (%s,%s): C_R(1) paper %.3f ours %.4f | C_R(0.95) paper %.3f ours %.4f"
           " (%d, %d steps)" % (test, rt, rb, mt, mb, s1, c1, s95, c95, n1, n95), flush=True)
 
 dat = os.path.join(a.out, "mixed.dat")
 with open(dat, "w") as f:
-    f.write("# test R_top R_bottom mat_top mat_bottom CR1_seed CR1_ours CR095_seed CR095_ours\n")
+    f.write("# test R_top R_bottom mat_top mat_bottom CR1_paper CR1_ours CR095_paper CR095_ours\n")
     for r in rows:
         f.write("%d %g %g %s %s %.3f %.4f %.3f %.4f\n" % r)
 
@@ -98,7 +101,7 @@ rows = [l.split() for l in open(sys.argv[1]) if l.strip() and l[0] != "#"]
 labels = ["%s\n(%s,%s)\n(%s,%s)" % (r[0], r[1], r[2], r[3], r[4]) for r in rows]
 x = range(len(rows))
 fig, ax = plt.subplots(figsize=(6, 4))
-ax.bar([i - 0.2 for i in x], [float(r[7]) for r in rows], 0.4, label="PeriDEM seed, Table 3")
+ax.bar([i - 0.2 for i in x], [float(r[7]) for r in rows], 0.4, label="Jha et al. 2021, Table 3")
 ax.bar([i + 0.2 for i in x], [float(r[8]) for r in rows], 0.4, label="PERIDEM")
 ax.set_xticks(list(x))
 ax.set_xticklabels(labels)
