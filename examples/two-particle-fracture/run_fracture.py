@@ -26,7 +26,8 @@ Writes fracture.dat, fracture.png (damaged nodes against v0) and damage_*.png (t
 field at the end of the v0 = 5 m/s runs, 8 m/s for drum and hex). --check asserts, for the
 series run: in walldiff the stronger M2 grain keeps every bond (damage 0) while the M1 grain
 between it and the wall breaks bonds; the damaged nodes of the weaker grain do not decrease
-with v0 and grow from the lowest to the highest speed; in drop2 the peak Z grows with v0.
+with v0 and grow from the lowest to the highest speed; in drop2 the peak Z grows with v0; in
+hex and drum the falling grain breaks bonds.
 PERIDEM-PASS / PERIDEM-FAIL.
 
 usage: run_fracture.py [--lmp PATH] [--series drop2,walldiff,...] [--speeds 2,4,5]
@@ -229,6 +230,11 @@ if a.check:
             d = [r[key] for v0, r in by[s]]
             if any(d[i + 1] < d[i] for i in range(len(d) - 1)) or not d[-1] > d[0]:
                 bad.append("%s: damaged nodes of the M1 grain %s do not grow with v0" % (s, d))
+    for s in ("hex", "drum"):
+        # §4.3 (Fig. 19-20): the falling non-circular grain breaks at its corners at 8 m/s
+        for v0, r in by.get(s, []):
+            if r["top_damaged"] == 0:
+                bad.append("%s v0 %g: the falling grain broke no bond" % (s, v0))
     if "drop2" in by and len(by["drop2"]) > 1:
         z = [r["top_Zpeak"] for v0, r in by["drop2"]]
         if any(z[i + 1] <= z[i] for i in range(len(z) - 1)):
