@@ -67,8 +67,10 @@ endforeach()
 add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver/post_create_hook.cpp
   ${PROJECT_SOURCE_DIR}/driver/register_driver.cpp)
 # the chunked bond loop of bond_peridem.cpp vectorises its square roots only
-# without errno (they take sums of squares, never negative)
-set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem.cpp PROPERTIES COMPILE_OPTIONS -fno-math-errno)
+# without errno (they take sums of squares, never negative); no FMA contraction,
+# so that its AVX-512 clone (which has FMA) gives the one-by-one loop's bits
+set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem.cpp PROPERTIES
+  COMPILE_OPTIONS "-fno-math-errno;-ffp-contract=off")
 target_include_directories(peridem PUBLIC ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/driver)
 # after LAMMPS's own include directory, so installed headers win where both exist
 target_include_directories(peridem SYSTEM AFTER PUBLIC ${PERIDEM_LAMMPS_SRC})

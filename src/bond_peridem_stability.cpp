@@ -50,7 +50,13 @@ void BondPeridem::stability_springs(std::vector<double> &k)
    intact bonds of the bond list (owned and ghost ends): a node whose bonds
    are partly stored on another rank gets a smaller m, hence a stiffer,
    still bounding spring; after breakage the force uses the reference m,
-   which is larger than the intact sum, so the bound holds too.
+   which is larger than the intact sum, so the bound holds too. The stored
+   m of fix peridem/bonds is not used: the estimate is made in the pair
+   style's setup, before the first bond computation of the first run has
+   summed it, and it is kept for owned nodes only (ghosts would need a
+   communication). On one rank, before breakage and without bonds across a
+   periodic boundary, both are the same sum to round-off, so the bisected
+   case of timestep_estimate_vs_threshold_bed would not move.
 ------------------------------------------------------------------------- */
 
 void BondPeridemLPS::stability_springs(std::vector<double> &k)

@@ -109,6 +109,17 @@ class FixPeridemWall : public Fix {
   void update_variable_walls();
   void reduce();
   void servo_control();
+
+  // nodes within reach of a wall (Rc + skin), found at reneighbouring as
+  // LAMMPS finds pair neighbours: the step loops over these only
+  std::vector<int> near;
+  bool near_list = true;   // keyword near_list (no: every node, to check the list against)
+  bigint near_ncalls = -1; // neighbor->ncalls of the list
+  int near_nlocal = -1;    // atom->nlocal of the list
+  double near_pos[peridem::kMaxWalls] = {}; // wall positions of the list
+  double near_slack = 0.0;                  // how far a wall may move before a rebuild
+  bool near_stale() const;
+  void build_near(const peridem::WallBox &box);
 };
 
 } // namespace LAMMPS_NS

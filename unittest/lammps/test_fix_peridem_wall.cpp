@@ -22,9 +22,11 @@
 
 #include "peridem_wall_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -402,6 +404,46 @@ TEST_F(FixPeridemWallTest, LostNodeCounted)
 {
   single_nodes(2, {"1.0 1.0 0.0", "-1.5 1.0 0.0"}, "xlo 0.0 lost warn");
   EXPECT_EQ(wall()->compute_vector(6 * 4), 1.0);
+}
+
+// In a run the walls act only on the nodes within R_c + 1.5 skin of a wall, listed at
+// reneighbouring, at every run's setup and whenever a wall has moved by half the skin. A grain
+// squeezed by two moving walls (each travels ~7 skins) against the floor, with a small skin,
+// in runs of 20 and 300 steps with LAMMPS's atom sorting on (every 50 steps and at setup):
+// the trajectory is the same, to the bit, as with near_list no (every node every step). A
+// list that missed a node entering the walls' reach, or kept the indices of the previous run
+// after setup sorted the atoms and reset neighbor->ncalls to 0, would change it.
+TEST_F(FixPeridemWallTest, NearWallListChangesNothing)
+{
+  auto squeeze = [&](const std::string &near) {
+    command("clear");
+    command(grain(0.0, 1.1e-3));
+    command("atom_modify sort 50 0.0\nneighbor 0.02e-3 bin\nneigh_modify every 1 delay 0 check "
+            "yes\nfix wall all peridem/wall ylo 0.0 yhi 2.2e-3 xhi 1.15e-3 velocity yhi -2.0 "
+            "velocity xhi -1.0 Kn 2.5e22 Rc_factor 0.95 spacing 0.15e-3 damping nodal 0.5 "
+            "friction regularized 0.5 near_list " +
+            near + "\nfix grav all gravity 1e4 vector 0 -1 0");
+    // short runs first, the grain moved towards the right wall before each: setup sorts the
+    // atoms (new indices) and resets neighbor->ncalls to 0 (no reneighbouring in a run)
+    for (int run = 0; run < 4; run++)
+      command("displace_atoms all move 0.03e-3 0 0\nrun 20 post no");
+    for (int run = 0; run < 10; run++) command("run 300 post no");
+    std::vector<double> xs(2 * lmp->atom->natoms, 0.0);
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      for (int k = 0; k < 2; k++) xs[2 * (lmp->atom->tag[i] - 1) + k] = lmp->atom->x[i][k];
+    return std::make_pair(xs, wall_entry(3, 2)); // positions by tag, top wall load
+  };
+  const auto listed = squeeze("yes");
+  const auto every = squeeze("no");
+  double dmax = 0.0;
+  for (std::size_t n = 0; n < listed.first.size(); n++)
+    dmax = std::max(dmax, std::fabs(listed.first[n] - every.first[n]));
+  std::printf("[ measure  ] near-wall list: top load %.6g vs %.6g, largest position "
+              "difference %.3g m\n",
+              listed.second, every.second, dmax);
+  EXPECT_GT(listed.second, 0.0); // the walls do press the grain
+  EXPECT_EQ(dmax, 0.0);
+  EXPECT_EQ(listed.second, every.second);
 }
 
 } // namespace

@@ -78,3 +78,20 @@ peridem_wall_error(contact_pair_without_pair "ylo 0.0 contact pair"
   "fix peridem/wall: contact pair needs pair_style peridem/contact")
 peridem_wall_error(contact_pair_and_keywords "ylo 0.0 contact pair Kn 1 Rc 0.5"
   "contact pair takes the contact law from pair_style peridem/contact: give no contact keywords")
+
+# near_list: the walls visit only the nodes near them; the same trajectory as near_list no
+# (every node every step) on the 20-grain settling bed of contact_scale.cmake through its first
+# wall impacts (3500 steps in runs of 500: each run's setup sorts the atoms), 1 and 2 ranks
+foreach(_np 1 2)
+  add_test(NAME wall_near_list_bed20_np${_np}
+    COMMAND ${PERIDEM_RUN}/near_list_compare.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            ${PROJECT_SOURCE_DIR}/examples/bed-settling/in.bed -var nx 5 -var ny 4 -var rmin 2e-4
+            -var rmax 3e-4 -var chunk 500 -var maxsteps 3500
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials)
+  set_tests_properties(wall_near_list_bed20_np${_np} PROPERTIES
+    PASS_REGULAR_EXPRESSION "PERIDEM-NEAR-LIST-SAME" FAIL_REGULAR_EXPRESSION "FAIL:|PERIDEM-UNSTABLE"
+    TIMEOUT 300 WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/near_list_np${_np})
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/near_list_np${_np})
+endforeach()
+peridem_wall_error(near_list_value "ylo 0.0 Kn 1 Rc 0.5 near_list maybe"
+  "fix peridem/wall: near_list must be no or yes, not maybe")
