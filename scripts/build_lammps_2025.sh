@@ -13,10 +13,12 @@
 #      against a LAMMPS with MOLECULE, PERI and PLUGIN;
 #   2. as a plugin: peridemplugin.so loaded with `plugin load` into that LAMMPS's lmp;
 #   3. in tree: src/ copied to lammps/src/PERIDEM and built into LAMMPS through
-#      its CMake package mechanism (PKG_PERIDEM, cmake/Modules/Packages/PERIDEM.cmake).
+#      its CMake package mechanism (PKG_PERIDEM, cmake/Modules/Packages/PERIDEM.cmake);
+#   then the LAMMPS-level tests of 1. again through the in-tree lmp and the plugin.
 # Everything is cached under $PERIDEM_LAMMPS2025_DIR (default /opt/peridem/lammps-2025):
 # a second call only rebuilds what changed. Usage:
 #   scripts/build_lammps_2025.sh [stage ...]     stages: fetch lammps outoftree reference plugin intree
+#                                                 intree-tests plugin-tests
 # (default: all, in that order). Logs: $PERIDEM_LAMMPS2025_DIR/logs/. Exit code 0 when
 # every stage passed.
 set -euo pipefail
@@ -32,7 +34,7 @@ jobs="${PERIDEM_JOBS:-2}"
 logs="$root/logs"
 mkdir -p "$root" "$logs"
 stages=("$@")
-[ ${#stages[@]} -eq 0 ] && stages=(fetch lammps outoftree reference plugin intree)
+[ ${#stages[@]} -eq 0 ] && stages=(fetch lammps outoftree reference plugin intree intree-tests plugin-tests)
 
 log() { echo "[$(date -u +%H:%M:%S)] $*"; }
 timed() { # name command...: runs the command with its output in $logs/name.log, times it
@@ -77,16 +79,27 @@ configure_lammps() { # ON|OFF: PERIDEM in tree or not
     -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON -DPKG_PERI=ON -DPKG_PLUGIN=ON -DPKG_PERIDEM="$1"
 }
 
-lammps() { # plain LAMMPS 2025 (the long part: about 600 files)
+lammps() { # plain LAMMPS 2025 (the long part: about 600 files), built once
+  # LAMMPS's source never changes here: its install is the cache (delete it to rebuild)
+  if [ -x "$plain/bin/lmp" ]; then
+    echo "cached: $plain (delete it to build LAMMPS again)"
+    return 0
+  fi
   configure_lammps OFF
   nice -n 10 cmake --build "$build" -j "$jobs"
   rm -rf "$plain"
   cmake --install "$build" --prefix "$plain"
 }
 
+# ccache (when installed) for this repository's files: a rerun after a change elsewhere in the
+# tree, or from another worktree, recompiles nothing that ccache has seen
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+
 outoftree() { # this repository against the plain LAMMPS 2025, then its tests
+  restore_driver
   cmake -S "$here" -B "$pbuild" -DCMAKE_BUILD_TYPE=Release -DLAMMPS_DIR="$plain/lib/cmake/LAMMPS" \
-    -DPERIDEM_LAMMPS_SRC="$src/src" -DPERIDEM_WERROR=ON
+    -DPERIDEM_LAMMPS_SRC="$src/src" -DPERIDEM_WERROR=ON "${launcher[@]}"
   nice -n 10 cmake --build "$pbuild" -j "$jobs"
   (cd "$pbuild" && LD_LIBRARY_PATH="$plain/lib:${LD_LIBRARY_PATH:-}" \
     ctest -j "$jobs" --output-on-failure ${PERIDEM_CTEST_ARGS:-})
@@ -102,8 +115,12 @@ reference() {
     -echo none -screen none) || return 1
 }
 
+fresh_reference() { # the reference again when this repository's build is newer than it
+  if [ ! "$root/runs/driver/log.lammps" -nt "$pbuild/libperidem.so" ]; then reference; fi
+}
+
 plugin() { # peridemplugin.so loaded by the plain LAMMPS's own lmp: the same thermo output
-  [ -f "$root/runs/driver/log.lammps" ] || reference
+  fresh_reference
   local d="$root/runs/plugin"
   rm -rf "$d" && mkdir -p "$d"
   (cd "$d" && LD_LIBRARY_PATH="$plain/lib:${LD_LIBRARY_PATH:-}" mpirun -np 2 "$plain/bin/lmp" \
@@ -113,22 +130,61 @@ plugin() { # peridemplugin.so loaded by the plain LAMMPS's own lmp: the same the
   python3 "$here/unittest/scripts/thermo_compare.py" "$d/log.lammps" "$root/runs/driver/log.lammps"
 }
 
+sync_file() { # from to: copies only a changed file, so that make recompiles only what changed
+  cmp -s "$1" "$2" || cp "$1" "$2"
+}
+
+# LAMMPS's Makefiles make every object of liblammps depend on lammps.dir/flags.make, which
+# also lists the per-file options of the package's files (PERIDEM.cmake): a change of those
+# alone would recompile all of LAMMPS (47 min). When flags.make differs from the one of the
+# last in-tree build only in lines naming src/PERIDEM/ (and blank lines), it gets that build's time back and the
+# package's own objects are removed, so that only they recompile.
+flags_last="$build/peridem-flags.make.last"
+save_flags() { cp -p "$build/CMakeFiles/lammps.dir/flags.make" "$flags_last"; }
+keep_lammps_objects() {
+  local flags="$build/CMakeFiles/lammps.dir/flags.make"
+  [ -f "$flags_last" ] && [ -f "$flags" ] || return 0
+  cmp -s "$flags" "$flags_last" && return 0
+  if cmp -s <(grep -v -e /PERIDEM/ -e '^$' "$flags") <(grep -v -e /PERIDEM/ -e '^$' "$flags_last"); then
+    echo "flags.make: only the package's lines changed; LAMMPS's objects kept"
+    touch -r "$flags_last" "$flags"
+    find "$build/CMakeFiles/lammps.dir" -path '*/src/PERIDEM/*.o' -delete
+  fi
+}
+
 intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo output
-  rm -rf "$src/src/PERIDEM"
-  mkdir -p "$src/src/PERIDEM"
-  cp "$here"/src/*.cpp "$here"/src/*.h "$here/src/README" "$src/src/PERIDEM/"
-  cp "$here/cmake/Modules/Packages/PERIDEM.cmake" "$src/cmake/Modules/Packages/PERIDEM.cmake"
+  local f pkg="$src/src/PERIDEM"
+  mkdir -p "$pkg"
+  for f in "$pkg"/*; do # files no longer in src/
+    if [ -e "$f" ] && [ ! -e "$here/src/$(basename "$f")" ]; then rm -f "$f"; fi
+  done
+  for f in "$here"/src/*.cpp "$here"/src/*.h "$here/src/README"; do
+    sync_file "$f" "$pkg/$(basename "$f")"
+  done
+  sync_file "$here/cmake/Modules/Packages/PERIDEM.cmake" "$src/cmake/Modules/Packages/PERIDEM.cmake"
   # register the package with LAMMPS's CMake: one more standard package with a module
   if ! grep -q "^  PERIDEM$" "$src/cmake/CMakeLists.txt"; then
     sed -i 's/^  PERI$/  PERI\n  PERIDEM/' "$src/cmake/CMakeLists.txt"
     sed -i 's/^\(foreach(PKG_WITH_INCL KSPACE PYTHON\)/\1 PERIDEM/' "$src/cmake/CMakeLists.txt"
   fi
+  # the first run after a build that predates save_flags: that build's flags.make
+  if [ ! -f "$flags_last" ] && [ "$build/liblammps.so" -nt "$build/CMakeFiles/lammps.dir/flags.make" ]; then
+    save_flags
+  fi
   configure_lammps ON
+  keep_lammps_objects
   nice -n 10 cmake --build "$build" -j "$jobs"
+  save_flags
   rm -rf "$intree"
   cmake --install "$build" --prefix "$intree"
-  configure_lammps OFF # the folder stays the plain build for the next `lammps` stage
-  [ -f "$root/runs/driver/log.lammps" ] || reference
+  # the folder stays configured with PERIDEM (switching back would recompile LAMMPS's
+  # style-list files twice per run); the plain LAMMPS is its install, $plain
+  # bond_style peridem's chunked loop vectorised (-fno-math-errno, PERIDEM.cmake): packed sqrt
+  local obj="$build/CMakeFiles/lammps.dir$src/src/PERIDEM/bond_peridem.cpp.o" n
+  n=$(objdump -d "$obj" | grep -c sqrtpd || true)
+  echo "bond_peridem.cpp.o in tree: $n sqrtpd"
+  [ "$n" -gt 0 ] || { echo "no sqrtpd in $obj: -fno-math-errno missing?" >&2; return 1; }
+  fresh_reference
   local d="$root/runs/intree"
   rm -rf "$d" && mkdir -p "$d"
   (cd "$d" && LD_LIBRARY_PATH="$intree/lib:${LD_LIBRARY_PATH:-}" mpirun -np 2 "$intree/bin/lmp" \
@@ -136,6 +192,44 @@ intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo out
     -log log.lammps -echo none -screen none) || return 1
   python3 "$here/unittest/scripts/thermo_compare.py" "$d/log.lammps" "$root/runs/driver/log.lammps"
 }
+
+# The LAMMPS-level tests (the input-driven ctests: every test whose name does not start with
+# a capital letter, i.e. all but the GoogleTest programs, which link libperidem) with LAMMPS
+# 2025's own lmp in place of lmp_peridem: `intree-tests` runs the in-tree build's lmp,
+# `plugin-tests` the plain lmp loading peridemplugin.so through LAMMPS_PLUGIN_PATH (LAMMPS
+# loads it at start and again after every `clear`, as `plugin load` does). The test build's
+# lmp_peridem is replaced by a wrapper for the run and restored afterwards.
+restore_driver() {
+  if [ -f "$pbuild/lmp_peridem.real" ]; then mv -f "$pbuild/lmp_peridem.real" "$pbuild/lmp_peridem"; fi
+}
+route_tests() { # intree|plugin
+  local lmp libs env=""
+  case "$1" in
+  intree) lmp="$intree/bin/lmp" libs="$intree/lib" ;;
+  plugin)
+    lmp="$plain/bin/lmp" libs="$plain/lib"
+    mkdir -p "$root/plugin-path" # a folder with peridemplugin.so alone
+    ln -sf "$pbuild/peridemplugin.so" "$root/plugin-path/peridemplugin.so"
+    env="export LAMMPS_PLUGIN_PATH=$root/plugin-path"
+    ;;
+  esac
+  restore_driver
+  mv "$pbuild/lmp_peridem" "$pbuild/lmp_peridem.real"
+  trap restore_driver EXIT
+  cat >"$pbuild/lmp_peridem" <<EOF
+#!/bin/sh
+# LAMMPS 2025 ($1) in place of lmp_peridem (scripts/build_lammps_2025.sh)
+$env
+export LD_LIBRARY_PATH=$libs\${LD_LIBRARY_PATH:+:\$LD_LIBRARY_PATH}
+exec $lmp "\$@"
+EOF
+  chmod +x "$pbuild/lmp_peridem"
+  # PERIDEM_ROUTE_EXCLUDE (optional): a regex of more tests to leave out, e.g. the longest
+  (cd "$pbuild" && ctest -j "$jobs" -E "^[A-Z]${PERIDEM_ROUTE_EXCLUDE:+|$PERIDEM_ROUTE_EXCLUDE}" \
+    --output-on-failure ${PERIDEM_CTEST_ARGS:-})
+}
+intree-tests() { route_tests intree; }
+plugin-tests() { route_tests plugin; }
 
 source "$here/unittest/scripts/mpi_env.sh"
 t_all=$(date +%s)

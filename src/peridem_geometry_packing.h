@@ -10,7 +10,7 @@
 // Jammed polydisperse disk (2D) and sphere (3D) packings of a rectangular
 // container: the "security disks" of Bhattacharya & Lipton 2023, §7-7.1.
 //
-// The seed (Bhattacharya and Lipton 2023, §7) starts a bed from disks that
+// Bhattacharya and Lipton 2023 (§7) start a bed from disks that
 // are jammed (Definition 7.1: no disk can be displaced without overlapping
 // another disk or a wall), shrinks them by R_c/2 so nothing touches at t = 0,
 // and inscribes one randomly rotated grain in each. Its §7.1 gets the disks

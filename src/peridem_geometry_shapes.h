@@ -32,7 +32,7 @@ Polygon make_regular_polygon(double radius, int sides);
 // Plus/cross (§6.3, §7.2): arm tips at distance `radius` (the half length R)
 // from the centre, arms of full width `arm_width`.
 Polygon make_plus(double radius, double arm_width);
-// Annulus (§7.2): inner radius tau * outer radius, tau = 0.6 in the seed.
+// Annulus (§7.2): inner radius tau * outer radius, tau = 0.6 in Bhattacharya & Lipton 2023.
 Polygon make_ring(double outer_radius, double inner_radius, int segments);
 // Randomly perturbed disk (§7.2): vertices (r_i cos t_i, r_i sin t_i),
 // t_i = 2 pi i / N, r_i = R (1 - X_i), X_i iid uniform on [0, 1 - phi]
@@ -46,7 +46,7 @@ Polygon make_neck(double length, double width, double neck_width);
 Polygon make_notched_plate(double width, double height, double notch_length, double notch_width,
                            bool v_notch);
 
-// Parameter table of a built-in shape (names as in the seed, defaults for a
+// Parameter table of a built-in shape (names as in Bhattacharya & Lipton 2023, defaults for a
 // grain of characteristic size 1).
 struct ShapeParameter {
   std::string name;

@@ -152,9 +152,9 @@ TEST(GeometryBonds, CutAlongNodeRowSeparates)
     EXPECT_EQ(bonds, shifted);
   }
 
-  // the seed's notch, from the left edge to the centre along the row: still one piece,
-  // and every bond from a node below the row to a node on or above it that meets the row
-  // left of the tip (x <= 0) is gone; all other bonds are kept
+  // the notch of Bhattacharya & Lipton 2023 (§6.4), from the left edge to the centre along the row:
+  // still one piece, and every bond from a node below the row to a node on or above it that meets
+  // the row left of the tip (x <= 0) is gone; all other bonds are kept
   auto bonds = all;
   remove_bonds_crossing(bonds, n.x, {{{-0.6, 0.0}, {0.0, 0.0}}});
   EXPECT_EQ(pieces(bonds).size(), 1u);

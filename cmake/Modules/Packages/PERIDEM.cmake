@@ -30,3 +30,13 @@ get_target_property(PERIDEM_EIGEN_INCLUDE Eigen3::Eigen INTERFACE_INCLUDE_DIRECT
 file(GLOB PERIDEM_SOURCES ${LAMMPS_SOURCE_DIR}/PERIDEM/*.cpp)
 set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY INCLUDE_DIRECTORIES ${PERIDEM_EIGEN_INCLUDE})
 set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -Wextra -Wno-unused-parameter)
+# bond_style peridem's chunked force loop: GCC vectorises its square roots and divisions
+# (sqrtpd, divpd) only without errno (the roots take sums of squares, never negative) and,
+# below -O3 (LAMMPS's default build type RelWithDebInfo is -O2), only with -ftree-vectorize
+# (GCC 12: no sqrtpd at -O1/-O2/-O3 without -fno-math-errno, nor at -O2 without -ftree-vectorize).
+# The stand-alone build (cmake/PeridemLAMMPS.cmake, -O3) sets -fno-math-errno the same way.
+# This file only, so that LAMMPS's own files keep LAMMPS's flags.
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp APPEND PROPERTY COMPILE_OPTIONS
+    -fno-math-errno -ftree-vectorize)
+endif()

@@ -47,6 +47,8 @@ peridem_add_error_test(bed_unknown_shape ${_b}
 peridem_add_error_test(bed_no_label_lines ${_b}
   "create_peridem_grains: no line of the positions file has label 'hexagon'"
   -var bed "count 10 ${_r} labels disk 1" -var grains "hexagon")
+# both write and read bed_error.txt in the same folder: never at the same time (ctest -j)
+set_tests_properties(error.bed_unknown_shape error.bed_no_label_lines PROPERTIES RESOURCE_LOCK bed_error_txt)
 peridem_add_error_test(bed_rattlers_value ${_b}
   "create_peridem_bed: rattlers must be grow or keep, got 'shake'"
   -var bed "count 10 ${_r} rattlers shake")
