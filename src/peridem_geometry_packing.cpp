@@ -525,8 +525,11 @@ int pack_tiles(int D, std::vector<std::array<double, 3>> &x, const std::vector<d
         as.push_back(a[i]);
         held.push_back(0.0);
       }
+      // obstacles down to the lowest lid: a neighbouring column lower than this
+      // tile's floor leaves a trench its disks can fill
+      const double deepest = std::min(yref, *std::min_element(lid.begin(), lid.end())) - margin;
       for (std::size_t j : placed) {
-        bool near = x[j][top] >= yref - margin;
+        bool near = x[j][top] >= deepest;
         for (int d = 0; d < top; d++)
           near = near && x[j][d] >= tlo[d] - margin && x[j][d] <= thi[d] + margin;
         if (!near) continue;
