@@ -75,8 +75,8 @@ struct PackingOptions {
   // are in [0, tau (r_i + r_j) / 2] (walls: [0, tau r_i]) and none is negative.
   double tolerance = 1e-3;
   int max_iterations = 200000;
-  // beds of more than 3 * tile disks are packed tile by tile, about `tile` disks
-  // a tile (near-linear time; see pack_spheres); 0: always as one bed
+  // 2d beds of more than 3 * tile disks are packed tile by tile, about `tile`
+  // disks a tile (near-linear time; see pack_spheres); 0: always as one bed
   std::size_t tile = 2000;
 };
 
@@ -91,10 +91,10 @@ struct Packing {
 
 // Jams the disks of the given radii in the container: side walls and floor
 // fixed, the lid (bed height) found by the minimisation. A cell grid gives
-// Verlet lists; beds of more than 3 * opt.tile disks are packed tile by tile
+// Verlet lists; 2d beds of more than 3 * opt.tile disks are packed tile by tile
 // (rows of tiles from the floor up, the packed disks around a tile held, one
-// strip on top), so the time grows near-linearly with N (see the .cpp). Throws GeometryError if the container cannot hold
-// the disks (a disk wider than the container, or the jammed bed higher than
+// strip on top), so the time grows near-linearly with N (see the .cpp). Throws GeometryError if the
+// container cannot hold the disks (a disk wider than the container, or the jammed bed higher than
 // the container) or if the minimisation does not converge.
 Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt);
 

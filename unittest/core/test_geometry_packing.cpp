@@ -463,22 +463,4 @@ TEST(GeometryPacking, TiledBedsNeverOverlapAndAreJammed)
   const Packing whole = pack_spheres(radii, o);
   EXPECT_NE(whole.centre, p.centre);
   EXPECT_NEAR(whole.fraction, p.fraction, 0.02);
-
-  // spheres: 2 x 2 columns of tiles and the top slab
-  PackingOptions s;
-  s.dimension = 3;
-  s.hi[0] = s.hi[1] = 16.0;
-  s.hi[2] = 200.0;
-  s.seed = 5;
-  s.tile = 250;
-  Packing b = pack_spheres(draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), 2000, 5), s);
-  EXPECT_GE(smallest_gaps(b).pair, 0.0);
-  EXPECT_GE(smallest_gaps(b).wall, 0.0);
-  EXPECT_LT(smallest_gaps(b).pair, tau * 0.8);
-  const double lo[3] = {1.6, 1.6, 1.6}, hi[3] = {14.4, 14.4, b.hi[2] - 1.6};
-  EXPECT_GE(fraction_inside(b, lo, hi, 60), 0.60);
-  const RattlerGrowth Gb = grow_rattlers(b, 1.1, tau);
-  EXPECT_EQ(jamming_report(b, tau).rattlers, Gb.capped) << Gb.before << " rattlers before growth";
-  EXPECT_LE(Gb.capped, 3u);
-  EXPECT_GE(smallest_gaps(b).pair, 0.0);
 }
