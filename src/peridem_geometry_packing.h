@@ -75,6 +75,9 @@ struct PackingOptions {
   // are in [0, tau (r_i + r_j) / 2] (walls: [0, tau r_i]) and none is negative.
   double tolerance = 1e-3;
   int max_iterations = 200000;
+  // 2d beds of more than 3 * tile disks are packed tile by tile, about `tile`
+  // disks a tile (near-linear time; see pack_spheres); 0: always as one bed
+  std::size_t tile = 2000;
 };
 
 struct Packing {
@@ -83,13 +86,15 @@ struct Packing {
   std::vector<double> radius;
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}; // the jammed bed: hi[dim-1] = its lid
   double fraction = 0.0;                       // disk area / bed area (volumes in 3D)
-  int iterations = 0;                          // FIRE iterations used
+  int iterations = 0; // FIRE iterations used (tiled: whole-bed equivalents)
 };
 
 // Jams the disks of the given radii in the container: side walls and floor
-// fixed, the lid (bed height) found by the minimisation. Near-linear: a cell
-// grid gives Verlet lists. Throws GeometryError if the container cannot hold
-// the disks (a disk wider than the container, or the jammed bed higher than
+// fixed, the lid (bed height) found by the minimisation. A cell grid gives
+// Verlet lists; 2d beds of more than 3 * opt.tile disks are packed tile by tile
+// (rows of tiles from the floor up, the packed disks around a tile held, one
+// strip on top), so the time grows near-linearly with N (see the .cpp). Throws GeometryError if the
+// container cannot hold the disks (a disk wider than the container, or the jammed bed higher than
 // the container) or if the minimisation does not converge.
 Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt);
 

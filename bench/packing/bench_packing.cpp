@@ -11,12 +11,15 @@
 // 0.4-1.1, mean 0.8, sd 0.09, Bhattacharya & Lipton's (2023) §7.3 bed) in a container
 // of width sqrt(N) mean diameters (a square-ish bed), one core. Prints N, the
 // median wall and CPU time of `repeats` runs, iterations, packing fraction,
-// rattlers, and (with -DGROW, the default since grow_rattlers exists) the CPU time of
-// the rattler growth and the rattlers left after it.
+// rattlers, and (unless -DNO_GROW) the CPU time of the rattler growth and the
+// rattlers left after it. With -3 first, spheres of the same radii in a box of
+// side cbrt(N) mean diameters. Last, the exponent b of a least-squares fit
+// CPU ~ N^b over all sizes given (the growth of time with the bed).
 // Not a unit test; build by hand from the repo root:
 //   g++ -O3 -std=c++17 -Isrc bench/packing/bench_packing.cpp
 //       src/peridem_geometry_packing.cpp -o /tmp/bench_packing
-//   /tmp/bench_packing 1500 5000 20000 100000
+//   /tmp/bench_packing 1500 5000 20000 50000 100000
+//   /tmp/bench_packing -3 500 2000 10000
 // bench/packing/compare.sh REV builds this and REV's packer (-DNO_GROW) and runs
 // them alternately, so both see the same load (CPU times, ratios).
 #include "peridem_geometry_packing.h"
@@ -27,19 +30,28 @@
 #include <cstdio>
 #include <ctime>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 using namespace peridem;
 
 int main(int argc, char **argv)
 {
-  for (int a = 1; a < argc; a++) {
+  int dim = 2, first = 1;
+  if (argc > 1 && std::string(argv[1]) == "-3") {
+    dim = 3;
+    first = 2;
+  }
+  std::vector<double> logn, logcpu;
+  for (int a = first; a < argc; a++) {
     const std::size_t n = std::strtoul(argv[a], nullptr, 10);
     const int repeats = n <= 20000 ? 5 : 1;
     const auto r = draw_radii(RadiusDistribution::normal(0.8, 0.09, 0.4, 1.1), n, 1);
     PackingOptions o;
-    o.hi[0] = 1.6 * std::sqrt(static_cast<double>(n));
-    o.hi[1] = 4 * o.hi[0];
+    o.dimension = dim;
+    const double side = 1.6 * std::pow(static_cast<double>(n), 1.0 / dim);
+    for (int d = 0; d < dim - 1; d++) o.hi[d] = side;
+    o.hi[dim - 1] = 4 * side;
     std::vector<double> t, cpu;
     Packing p;
     for (int k = 0; k < repeats; k++) {
@@ -66,5 +78,19 @@ int main(int argc, char **argv)
                 1e9 * cpu[cpu.size() / 2] / (static_cast<double>(n) * p.iterations), p.iterations,
                 p.fraction, 100.0 * j.rattlers / n, smallest_gaps(p).pair);
     std::fflush(stdout);
+    logn.push_back(std::log(static_cast<double>(n)));
+    logcpu.push_back(std::log(cpu[cpu.size() / 2]));
+  }
+  if (logn.size() >= 2) {
+    double mn = 0.0, mc = 0.0, snn = 0.0, snc = 0.0;
+    for (std::size_t k = 0; k < logn.size(); k++) {
+      mn += logn[k] / logn.size();
+      mc += logcpu[k] / logn.size();
+    }
+    for (std::size_t k = 0; k < logn.size(); k++) {
+      snn += (logn[k] - mn) * (logn[k] - mn);
+      snc += (logn[k] - mn) * (logcpu[k] - mc);
+    }
+    std::printf("fit: cpu ~ N^%.2f over %zu sizes (%dD)\n", snc / snn, logn.size(), dim);
   }
 }
