@@ -17,6 +17,10 @@ bad = False
 for path in sys.argv[1:]:
     rows = [[int(w) for w in line.split()] for line in open(path) if len(line.split()) > 1]
     rows = [r for r in rows if all(v > 0 for v in r[1:])]  # a rank not started yet
+    # before mpirun has started the ranks, a line holds mpirun's own RSS: keep the lines
+    # with one column per rank
+    ncol = max((len(r) for r in rows), default=0)
+    rows = [r for r in rows if len(r) == ncol]
     if len(rows) < 2:
         print(f"{path}: {len(rows)} samples, too few")
         continue
