@@ -14,7 +14,7 @@
 #   * built: lmp_peridem and libperidem.so ($PERIDEM_ASAN_TARGETS; "all" builds
 #     everything, also test_core, the force-style drivers and the gtests);
 #   * run: the bad-input catalogue (catalogue_*: every style's argument parsing and
-#     init, and LAMMPS's error exit), twelve LAMMPS-level inputs (contact, breakage,
+#     init, and LAMMPS's error exit), eleven LAMMPS-level inputs (contact, breakage,
 #     walls, LPS, restart and data files, cuts, files) and the python3 route; with
 #     PERIDEM_ASAN_TARGETS=all also the core unit tests and the force-style drivers
 #     (their tests run when built). Not the examples, the multi-rank variants and
@@ -60,7 +60,7 @@ echo "run_tests_asan.sh: built in $((SECONDS - start)) s"
 export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_odr_violation=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 core='^(Bed|BondLaw|ContactLaw|Geometry[A-Za-z]+|GrainShape|LpsLaw|Material|WallGeometry[A-Za-z0-9]*)\.'
-inputs='contact_collision_energy|contact_after_break_2d|contact_incline_regularized_0\.95|contact_pair_local'
+inputs='contact_after_break_2d|contact_incline_regularized_0\.95|contact_pair_local'
 inputs="$inputs|contact_startup_wall_overlap_warns|bond_lps_material|escaped_nodes_beyond_wall_deleted"
 inputs="$inputs|notch_node_row_np1|data_file_keeps_damage_np1|centroid_range_closed_form_np1"
 inputs="$inputs|files\.found_in_potentials_np1|driver\.clear_keeps_styles"
