@@ -30,6 +30,7 @@
 #include "error.h"
 #include "input.h"
 #include "lmp_peridem_grains.h"
+#include "lmp_peridem_parse.h"
 #include "math_const.h"
 #include "region.h"
 #include "update.h"
@@ -80,7 +81,7 @@ ComputePeridemBed::ComputePeridemBed(LAMMPS *lmp, int narg, char **arg)
         error->all(FLERR, "Illegal {} command: top {}: expected surface, max, region or v_name",
                    STYLE, value);
     } else if (strcmp(arg[iarg], "bin") == 0) {
-      bin_width = utils::numeric(FLERR, value, false, lmp);
+      bin_width = peridem_lmp::number(lmp, STYLE, "bin", value);
       if (bin_width <= 0.0)
         error->all(FLERR, "Illegal {} command: bin {} must be positive", STYLE, value);
     } else

@@ -37,6 +37,7 @@
 #include "error.h"
 #include "force.h"
 #include "lmp_peridem_grains.h"
+#include "lmp_peridem_parse.h"
 #include "memory.h"
 #include "neighbor.h"
 #include "update.h"
@@ -86,7 +87,7 @@ ComputePeridemFragments::ComputePeridemFragments(LAMMPS *lmp, int narg, char **a
       else
         error->all(FLERR, "Illegal {} command: min {}: expected nodes or volume", STYLE,
                    arg[iarg + 1]);
-      min_size = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      min_size = peridem_lmp::number(lmp, STYLE, "min", arg[iarg + 2]);
       if (min_size < 0.0)
         error->all(FLERR, "Illegal {} command: min {} {} must not be negative", STYLE,
                    arg[iarg + 1], arg[iarg + 2]);

@@ -13,6 +13,7 @@
 
 #include "create_peridem_bed.h"
 #include "lmp_peridem_citations.h"
+#include "lmp_peridem_parse.h"
 
 #include "comm.h"
 #include "domain.h"
@@ -70,12 +71,12 @@ void CreatePeridemBed::command(int narg, char **arg)
     if (iarg + n > narg)
       error->all(FLERR, "Illegal {} command: {} needs {} value(s)", CMD, what, n);
   };
-  auto num = [&](int k) { return utils::numeric(FLERR, arg[k], false, lmp); };
   while (iarg < narg) {
     const std::string key = arg[iarg++];
+    auto num = [&](int k) { return peridem_lmp::number(lmp, CMD, key, arg[k]); };
     if (key == "count") {
       need(1, "count");
-      count = utils::bnumeric(FLERR, arg[iarg++], false, lmp);
+      count = peridem_lmp::integer(lmp, CMD, key, arg[iarg++]);
       if (count <= 0) error->all(FLERR, "{}: count must be > 0, got {}", CMD, count);
     } else if (key == "radius") {
       need(1, "radius");
@@ -100,7 +101,7 @@ void CreatePeridemBed::command(int narg, char **arg)
       have_radius = true;
     } else if (key == "seed") {
       need(1, "seed");
-      seed = utils::bnumeric(FLERR, arg[iarg++], false, lmp);
+      seed = peridem_lmp::integer(lmp, CMD, key, arg[iarg++]);
       if (seed <= 0) error->all(FLERR, "{}: seed must be > 0, got {}", CMD, seed);
     } else if (key == "box") {
       need(2 * dim, "box");

@@ -23,6 +23,7 @@
 #include "force.h"
 #include "math_const.h"
 #include "lmp_peridem_material.h"
+#include "lmp_peridem_parse.h"
 #include "lmp_peridem_topology.h"
 
 #include "peridem_geometry_grain.h"
@@ -290,7 +291,7 @@ void CreatePeridemGrains::command(int narg, char **arg)
 void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
 {
   if (narg < 2) error->all(FLERR, "Illegal {} command: expected atom type and shape", CMD);
-  o.type = utils::inumeric(FLERR, arg[0], false, lmp);
+  o.type = int(peridem_lmp::integer(lmp, CMD, "atom type", arg[0]));
   o.shape = arg[1];
   int iarg = 2;
 
@@ -299,7 +300,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       error->all(FLERR, "Illegal {} command: {} needs {} value(s)", CMD, what, n);
   };
   auto positive = [&](const char *str, const char *what) {
-    const double v = utils::numeric(FLERR, str, false, lmp);
+    const double v = peridem_lmp::number(lmp, CMD, what, str);
     if (!(v > 0.0)) error->all(FLERR, "{}: {} must be > 0, got {}", CMD, what, str);
     return v;
   };
@@ -314,7 +315,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
                              [&](const peridem::ShapeParameter &p) { return p.name == key; })
                : solid_shapes().at(o.shape).count(key) > 0;
       if (!known) break;
-      o.params[key] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      o.params[key] = peridem_lmp::number(lmp, CMD, key, arg[iarg + 1]);
       iarg += 2;
     }
   } else if (o.shape == "file" || o.shape == "gmsh") {
@@ -333,9 +334,9 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     const std::string key = arg[iarg++];
     if (key == "at") {
       need(3, "at");
-      o.at.push_back({utils::numeric(FLERR, arg[iarg], false, lmp),
-                      utils::numeric(FLERR, arg[iarg + 1], false, lmp),
-                      utils::numeric(FLERR, arg[iarg + 2], false, lmp)});
+      o.at.push_back({peridem_lmp::number(lmp, CMD, key, arg[iarg]),
+                      peridem_lmp::number(lmp, CMD, key, arg[iarg + 1]),
+                      peridem_lmp::number(lmp, CMD, key, arg[iarg + 2])});
       iarg += 3;
     } else if (key == "positions") {
       need(1, "positions");
@@ -359,21 +360,21 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       iarg += 2;
     } else if (key == "bond/type") {
       need(1, "bond/type");
-      o.bond_type = utils::inumeric(FLERR, arg[iarg++], false, lmp);
+      o.bond_type = int(peridem_lmp::integer(lmp, CMD, key, arg[iarg++]));
     } else if (key == "rotate") {
       need(1, "rotate");
       o.rotate_given = true;
       if (strcmp(arg[iarg], "random") == 0) {
         need(2, "rotate random");
-        o.rotate_seed = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+        o.rotate_seed = peridem_lmp::integer(lmp, CMD, "rotate random", arg[iarg + 1]);
         if (o.rotate_seed <= 0) error->all(FLERR, "{}: rotate random seed must be > 0", CMD);
         iarg += 2;
       } else {
-        o.angle = utils::numeric(FLERR, arg[iarg++], false, lmp) * MY_PI / 180.0;
+        o.angle = peridem_lmp::number(lmp, CMD, key, arg[iarg++]) * MY_PI / 180.0;
       }
     } else if (key == "axis") {
       need(3, "axis");
-      for (int k = 0; k < 3; k++) o.axis[k] = utils::numeric(FLERR, arg[iarg + k], false, lmp);
+      for (int k = 0; k < 3; k++) o.axis[k] = peridem_lmp::number(lmp, CMD, key, arg[iarg + k]);
       const double norm =
           std::sqrt(o.axis[0] * o.axis[0] + o.axis[1] * o.axis[1] + o.axis[2] * o.axis[2]);
       if (!(norm > 0.0)) error->all(FLERR, "{}: rotation axis must not be zero", CMD);
@@ -409,7 +410,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     } else if (key == "notch") {
       need(4, "notch");
       double v[4];
-      for (int k = 0; k < 4; k++) v[k] = utils::numeric(FLERR, arg[iarg + k], false, lmp);
+      for (int k = 0; k < 4; k++) v[k] = peridem_lmp::number(lmp, CMD, key, arg[iarg + k]);
       o.notches.push_back({{v[0], v[1]}, {v[2], v[3]}});
       iarg += 4;
     } else if (key == "overlap") {

@@ -18,6 +18,7 @@
 #include "domain.h"
 #include "error.h"
 #include "group.h"
+#include "lmp_peridem_parse.h"
 #include "lmp_peridem_topology.h"
 
 #include "peridem_geometry_bonds.h"
@@ -56,7 +57,7 @@ void CutPeridemBonds::command(int narg, char **arg)
       error->all(FLERR, "{}: unknown keyword '{}' (expected segment x1 y1 x2 y2)", CMD, arg[iarg]);
     if (iarg + 5 > narg) error->all(FLERR, "{}: segment needs 4 values: x1 y1 x2 y2", CMD);
     double v[4];
-    for (int k = 0; k < 4; k++) v[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+    for (int k = 0; k < 4; k++) v[k] = peridem_lmp::number(lmp, CMD, "segment", arg[iarg + 1 + k]);
     if (v[0] == v[2] && v[1] == v[3])
       error->all(FLERR, "{}: segment {} {} {} {} has zero length", CMD, arg[iarg + 1],
                  arg[iarg + 2], arg[iarg + 3], arg[iarg + 4]);

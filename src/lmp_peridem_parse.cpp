@@ -16,6 +16,7 @@
 #include "error.h"
 #include "lammps.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -54,6 +55,18 @@ double number(LAMMPS *lmp, const std::string &command, const std::string &keywor
     lmp->error->all(FLERR, "{}: {} must be a number, not '{}'", command, keyword, text);
   if (!std::isfinite(v))
     lmp->error->all(FLERR, "{}: {} must be a finite number, not {}", command, keyword, text);
+  return v;
+}
+
+long long integer(LAMMPS *lmp, const std::string &command, const std::string &keyword,
+                  const char *value)
+{
+  const std::string text = value ? value : "";
+  char *end = nullptr;
+  errno = 0;
+  const long long v = text.empty() ? 0 : std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || end == text.c_str() || *end != '\0' || errno == ERANGE)
+    lmp->error->all(FLERR, "{}: {} must be an integer, not '{}'", command, keyword, text);
   return v;
 }
 

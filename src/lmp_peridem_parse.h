@@ -38,6 +38,11 @@ int yes_no(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string
 double number(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
               const char *value);
 
+// A whole number (decimal, within 64 bits) for <keyword> of <command>; otherwise
+// "<command>: <keyword> must be an integer, not '<value>'" (1.5, nan, words, overflow).
+long long integer(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
+                  const char *value);
+
 } // namespace peridem_lmp
 
 #endif

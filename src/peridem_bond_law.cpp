@@ -113,6 +113,9 @@ BondConstants derive_bond_constants(int dimension, Micromodulus micromodulus, El
     bc.c = 9.0 * K / (2.0 * kPi * std::pow(horizon, 4) * moment(micromodulus, 3));
     bc.s0 = std::sqrt(2.0 * G_c / (kPi * bc.c * moment(micromodulus, 4) * std::pow(horizon, 5)));
   }
+  // finite inputs can still overflow (E = 1e300 gives c = inf): refuse rather than run with inf
+  require_positive("spring constant c", bc.c);
+  require_positive("critical stretch s0", bc.s0);
   return bc;
 }
 
