@@ -61,36 +61,6 @@ peridem_add_error_test(bed_negative_gap ${_b}
 peridem_add_error_test(bed_rows_3d ${_in}/bed/bed_box3d.in
   "create_peridem_bed: layout rows is 2d only"
   -var bed "${_r} layout rows")
-peridem_add_error_test(bed_count_zero ${_b}
-  "create_peridem_bed: count must be > 0, got 0"
-  -var bed "count 0 ${_r}")
-peridem_add_error_test(bed_seed_negative ${_b}
-  "create_peridem_bed: seed must be > 0, got -3"
-  -var bed "count 10 radius uniform 0.4 0.6 seed -3")
-peridem_add_error_test(bed_box_inverted ${_b}
-  "create_peridem_bed: box 4 1 is empty or inverted"
-  -var bed "count 10 ${_r} box 4 1 0 10")
-peridem_add_error_test(bed_negative_contact_radius ${_b}
-  "create_peridem_bed: contact_radius must be >= 0, got -0.01"
-  -var bed "count 10 ${_r} contact_radius -0.01")
-peridem_add_error_test(bed_negative_perturb ${_b}
-  "create_peridem_bed: perturb must be >= 0, got -0.2"
-  -var bed "${_r} layout rows perturb -0.2")
-peridem_add_error_test(bed_label_proportion_zero ${_b}
-  "create_peridem_bed: proportion of label hexagon must be > 0, got 0"
-  -var bed "count 10 ${_r} labels disk 1 hexagon 0")
-peridem_add_error_test(bed_labels_without_pairs ${_b}
-  "Illegal create_peridem_bed command: labels needs NAME PROPORTION pairs"
-  -var bed "count 10 ${_r} labels disk")
-peridem_add_error_test(bed_no_count ${_b}
-  "create_peridem_bed: no number of disks given \\(use count N\\)"
-  -var bed "${_r}")
-peridem_add_error_test(bed_no_radius ${_b}
-  "create_peridem_bed: no radius distribution given"
-  -var bed "count 10 seed 1")
-peridem_add_error_test(bed_count_without_value ${_b}
-  "Illegal create_peridem_bed command: count needs 1 value\\(s\\)"
-  -var bed "${_r} count")
 peridem_add_error_test(bed_tolerance_out_of_range ${_b}
   "create_peridem_bed: packing tolerance 0.5 must be in \\(0, 0.1\\)"
   -var bed "count 10 ${_r} tolerance 0.5")
