@@ -7,7 +7,7 @@
 # version 2; see the LICENSE file in the top-level PERIDEM directory.
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
-# Side-by-side timing of the packer against an older commit (issue 12):
+# Side-by-side timing of the packer against an older commit:
 #   bench/packing/compare.sh REV [-3] [N ...]  (default N: 1500 5000 20000 50000 100000;
 #                                               -3: spheres)
 # builds bench_packing.cpp with REV's src/peridem_geometry_packing.* (old) and with

@@ -14,7 +14,7 @@
 # shared), node-steps/s (wall and CPU), bond updates/s, contact pair
 # evaluations/s (neighbour pairs x steps / loop time), memory per node and
 # per bond, and the ratio to the PeriDEM reference code's 7.9e4 node-steps/s
-# on one thread (measured by the reporter of issue 15 on this machine; the
+# on one thread (measured on this machine when the performance work began; the
 # reference code is not built here).
 # Usage: bench/two-disc/run_bench.sh [build dir] [repeats] [steps]
 set -euo pipefail

@@ -103,7 +103,7 @@ TEST(GeometryBonds, CutsRemoveBondsAcrossNotch)
   EXPECT_FALSE(bond_crosses_cut({0.1, -1}, {0.1, 1}, {{-1, 0}, {0, 0}}));
 }
 
-// Issue 14: a cut drawn along a node row (a lattice grain's centre line, seed §6.4) cut
+// A cut drawn along a node row (a lattice grain's centre line, Bhattacharya & Lipton 2023 §6.4) cut
 // nothing while the row's nodes were on neither side. Now each node belongs to one side
 // (the row to the left of a -> b), so the cut separates the grain.
 TEST(GeometryBonds, CutAlongNodeRowSeparates)

@@ -342,7 +342,7 @@ TEST_F(BondPeridem, CompressionBreaksBondsOnlyWhenAskedTo)
   }
 }
 
-// Issue 15: the chunked force loop of ordinary steps (no energy or virial) gives the same
+// The chunked force loop of ordinary steps (no energy or virial) gives the same
 // forces, to the bit, and breaks the same bonds as the loop of energy steps, which takes one
 // bond at a time. A jittered 2D block (100 nodes, 1058 bonds: 17 chunks of 64) with a
 // quarter of its bonds stretched past s0 (244 break); the forces are computed by calling the bond

@@ -6,7 +6,7 @@
 # version 2; see the LICENSE file in the top-level PERIDEM directory.
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
-# The grain-shape paper's fracture experiments as examples (issue 14):
+# The grain-shape paper's fracture experiments as examples:
 # examples/notch-fracture (§6.4), examples/kalthoff-winkler (§6.2),
 # examples/plus-collision (§6.3).
 
