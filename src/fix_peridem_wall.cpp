@@ -438,7 +438,10 @@ peridem::WallBox FixPeridemWall::make_box() const
   box.dimension = domain->dimension;
   for (int w = 0; w < nwalls; w++) {
     box.active[w] = walls[w].active;
-    (w % 2 == 0 ? box.lo : box.hi)[w / 2] = walls[w].pos;
+    if (w % 2 == 0)
+      box.lo[w / 2] = walls[w].pos;
+    else
+      box.hi[w / 2] = walls[w].pos;
   }
   return box;
 }
