@@ -32,6 +32,9 @@ build="${PERIDEM_ASAN_BUILD_DIR:-$here/build-asan}"
 jobs="${PERIDEM_ASAN_JOBS:-$(nproc)}"
 "$here/scripts/setup-debian.sh"
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
+# set before the build too: gtest_discover_tests runs each gtest executable at build time
+export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_odr_violation=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 launcher=()
 if command -v ccache >/dev/null; then # a rebuild after a small change takes seconds
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
@@ -57,8 +60,6 @@ fi
 echo "run_tests_asan.sh: built in $((SECONDS - start)) s"
 [ "${PERIDEM_ASAN_BUILD_ONLY:-0}" = 1 ] && exit 0
 
-export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:halt_on_error=1:detect_odr_violation=0"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 core='^(Bed|BondLaw|ContactLaw|Geometry[A-Za-z]+|GrainShape|LpsLaw|Material|WallGeometry[A-Za-z0-9]*)\.'
 inputs='contact_after_break_2d|contact_incline_regularized_0\.95|contact_pair_local'
 inputs="$inputs|contact_startup_wall_overlap_warns|bond_lps_material|escaped_nodes_beyond_wall_deleted"
