@@ -22,6 +22,17 @@ namespace peridem {
 
 namespace {
 
+// A generator of its own for one use of a packing seed (salt tells the uses
+// apart, so e.g. radii and positions drawn from one seed do not correlate): the
+// seed plus the salt through the splitmix64 finaliser (Steele et al. 2014).
+PackingRandom random_stream(std::uint64_t seed, std::uint64_t salt)
+{
+  std::uint64_t z = seed + salt;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return PackingRandom(z ^ (z >> 31));
+}
+
 std::string str(double v)
 {
   std::ostringstream s;
@@ -460,10 +471,7 @@ int pack_tiles(int D, std::vector<std::array<double, 3>> &x, const std::vector<d
   const std::size_t per_tile = N / (ncol * rows);
 
   // disks in a seeded random order (a sorted radius list must not fill the floor first)
-  std::uint64_t z = opt.seed + 0x5851f42d4c957f2dULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  PackingRandom rng(z ^ (z >> 31));
+  PackingRandom rng = random_stream(opt.seed, 0x5851f42d4c957f2dULL);
   std::vector<std::size_t> order(N);
   for (std::size_t i = 0; i < N; i++) order[i] = i;
   for (std::size_t i = N; i > 1; i--)
@@ -625,10 +633,7 @@ Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt
 
   // random loose start at packing fraction 0.5 (the overlaps are pushed apart first)
   // a stream of its own: draw_radii with the same seed must not correlate radii and positions
-  std::uint64_t z = opt.seed + 0x9e3779b97f4a7c15ULL; // splitmix64 finaliser
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  PackingRandom rng(z ^ (z >> 31));
+  PackingRandom rng = random_stream(opt.seed, 0x9e3779b97f4a7c15ULL);
   double H = std::max(volume / std::pow(L, D) / (0.5 * area), 2.0 * amax);
   std::vector<std::array<double, 3>> x0(N);
   for (std::size_t i = 0; i < N; i++) {
@@ -1120,10 +1125,7 @@ Packing row_packing(const RadiusDistribution &dist, const RowOptions &opt)
   if (opt.max_count > 0) nmax = std::min(nmax, opt.max_count);
   const std::vector<double> radii = draw_radii(dist, nmax, opt.seed);
   // the spacings from a stream of their own (see pack_spheres)
-  std::uint64_t z = opt.seed + 0x7f4a7c159e3779b9ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  PackingRandom rng(z ^ (z >> 31));
+  PackingRandom rng = random_stream(opt.seed, 0x7f4a7c159e3779b9ULL);
   Packing out;
   out.dimension = 2;
   for (int d = 0; d < 3; d++) {
