@@ -291,12 +291,13 @@ void BondPeridem::break_bond(int n, int i1, int i2, double r0, double s0type)
 {
   neighbor->bondlist[n][2] = 0;
   double **x = atom->x;
-  double **x0 = atom->x0;
-  double du[3];
-  for (int d = 0; d < 3; d++) du[d] = (x[i2][d] - x[i1][d]) - (x0[i2][d] - x0[i1][d]);
-  domain->minimum_image(du[0], du[1], du[2]);
-  const double z =
-      peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]), r0, s0type);
+  double dy[3];
+  for (int d = 0; d < 3; d++) dy[d] = x[i2][d] - x[i1][d];
+  domain->minimum_image(dy[0], dy[1], dy[2]);
+  // the damage Z a broken bond leaves at its nodes: the stretch that broke it over s0 (>= 1;
+  // compute peridem/damage explains the choice)
+  const double z = peridem::z_stretch_term(
+      peridem::stretch(std::sqrt(dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]), r0), s0type);
   bonds_fix->bond_broken(i1, i2, z);
 }
 

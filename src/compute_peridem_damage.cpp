@@ -10,9 +10,16 @@
 /* ----------------------------------------------------------------------
    PERIDEM: compute peridem/damage.
 
-   Per node (Bhattacharya & Lipton 2023, §3.1, Jha et al. 2021, eq. 14):
+   Per node (Bhattacharya & Lipton 2023, §3.1, Jha et al. 2021, eqs. 14-15):
      phi = broken / reference bonds of the node
-     Z   = max over the node's reference bonds of |u_j - u_i| / |xi| / s0
+     Z   = max over the node's intact reference bonds of |s| / s0 (z stretch, the default),
+           or of |u_j - u_i| / |xi| / s0 (z displacement, eq. 14 as printed),
+           and over its broken bonds of the s / s0 (>= 1) at which each broke.
+   Eq. 14 as printed counts a rigid rotation as strain (a grain turned by
+   2 s0 radians reads Z >= 1 on every node); the authors' PeriDEM code takes
+   the bond strain instead, max |S / Sc|, which is the default here. Broken
+   bonds have left the bond arrays, so their value is the one recorded when
+   they broke (the authors' code keeps evaluating them; both read >= 1).
    per grain: the mean of phi over the grain's nodes; bulk damage: the mean
    over grains of the grain damage.
 
@@ -32,6 +39,7 @@
 #include "error.h"
 #include "lmp_peridem_grains.h"
 #include "lmp_peridem_image.h"
+#include "lmp_peridem_parse.h"
 #include "fix_peridem_bonds.h"
 #include "force.h"
 #include "memory.h"
@@ -42,6 +50,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -55,9 +64,19 @@ enum { PHI = 0, ZMAX = 1, GRAIN = 2 };
 
 ComputePeridemDamage::ComputePeridemDamage(LAMMPS *lmp, int narg, char **arg)
     : Compute(lmp, narg, arg), nmax(0), damage(nullptr), intact(nullptr), zintact(nullptr),
-      stats(nullptr), s0(nullptr), bonds_fix(nullptr)
+      stats(nullptr), s0(nullptr), bonds_fix(nullptr), z_displacement(0)
 {
-  if (narg != 3) error->all(FLERR, "Illegal {} command: it takes no arguments", STYLE);
+  // z stretch (default) | displacement: the bond strain measure of column 2 (see the header)
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    if (std::strcmp(arg[iarg], "z") != 0)
+      error->all(FLERR, "Illegal {} command: unknown keyword {} (the only keyword is z)", STYLE,
+                 arg[iarg]);
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal {} command: keyword z needs a value (stretch or displacement)",
+                 STYLE);
+    z_displacement =
+        peridem_lmp::choice(lmp, STYLE, "z", arg[iarg + 1], {"stretch", "displacement"});
+  }
   if (!atom->molecular || !atom->molecule_flag || !atom->x0_flag)
     error->all(FLERR, "{} requires atom style peridem (bonds, grain IDs and x0)", STYLE);
 
@@ -138,9 +157,17 @@ void ComputePeridemDamage::count_bonds()
       double xi[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
       peridem_lmp::minimum_image(domain, du[0], du[1], du[2]);
       peridem_lmp::minimum_image(domain, xi[0], xi[1], xi[2]);
-      const double z =
-          peridem::z_bond_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]),
-                               std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]), s0[type]);
+      const double r0 = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
+      double z;
+      if (z_displacement) {
+        z = peridem::z_displacement_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]),
+                                         r0, s0[type]);
+      } else {
+        double dy[3] = {xi[0] + du[0], xi[1] + du[1], xi[2] + du[2]};
+        z = peridem::z_stretch_term(
+            peridem::stretch(std::sqrt(dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]), r0),
+            s0[type]);
+      }
       intact[i] += 1.0;
       zintact[i] = std::max(zintact[i], z);
       if (newton_bond) { // the partner does not store this bond

@@ -44,6 +44,7 @@ class ComputePeridemDamage : public Compute {
   double *stats;   // bulk damage, broken bonds, reference bonds, grains
   double *s0;      // critical stretch per bond type, from the bond style
   class FixPeridemBonds *bonds_fix;
+  int z_displacement; // 1: Z by eq. 14 as printed (|u_j - u_i|); 0: by the bond stretch
 
   void refresh();
   void count_bonds();

@@ -185,13 +185,23 @@ inline double bond_fraction_damage(long broken, long reference)
   return reference > 0 ? static_cast<double>(broken) / static_cast<double>(reference) : 0.0;
 }
 
-// One bond's term of the damage Z of Jha et al. 2021, eq. (14):
-//   Z(x) = sup_{y in B_eps(x)} |u(y) - u(x)| / |y - x| / s0,
-// i.e. |u_j - u_i| / |xi| / s0 (the displacement-difference magnitude, not the stretch;
-// |s| <= |u_j - u_i|/|xi| by the triangle inequality).  Z(x) is the max of this over the
-// node's reference bonds; Z >= 1 marks the fracture zone, eq. (15).  (The PeriDEM reference
-// code instead takes max |s|/s0; use z_bond_term(fabs(s) * r, r, s0) for that variant.)
-inline double z_bond_term(double displacement_difference_norm, double reference_length, double s0)
+// The damage Z of Jha et al. 2021, eqs. (14)-(15): Z(x) is the largest bond strain in the
+// horizon of x over the critical strain s0, and Z >= 1 marks the fracture zone. Two measures of
+// one bond's strain are offered; Z of a node is the max over its reference bonds.
+//
+// Stretch measure (the default of compute peridem/damage): |s| / s0 with the bond stretch
+// s = (|y| - |xi|)/|xi|. This is what the authors' PeriDEM code computes (max |S/Sc| with S the
+// material's bond strain), and it is zero under a rigid motion of the grain.
+inline double z_stretch_term(double stretch, double s0)
+{
+  return std::fabs(stretch) / s0;
+}
+
+// Displacement measure, eq. (14) as printed: |u_j - u_i| / |xi| / s0. It is never below the
+// stretch measure (triangle inequality) but counts rotation as strain: a grain rotated rigidly
+// by theta reads 2 sin(theta/2) / s0 on every bond, which exceeds 1 from theta ~ s0 on.
+inline double z_displacement_term(double displacement_difference_norm, double reference_length,
+                                  double s0)
 {
   return displacement_difference_norm / reference_length / s0;
 }

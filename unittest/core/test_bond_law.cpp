@@ -356,18 +356,36 @@ TEST(BondLaw, DamageMeasures)
   EXPECT_DOUBLE_EQ(bond_fraction_damage(3, 12), 0.25);
   EXPECT_DOUBLE_EQ(bond_fraction_damage(0, 0), 0.0);
   EXPECT_DOUBLE_EQ(bond_fraction_damage(7, 7), 1.0);
-  // Jha et al. 2021, eq. 14: |u_j - u_i| / |xi| / s0.
-  EXPECT_NEAR(z_bond_term(0.002, 0.1, 0.01), 2.0, 1e-14);
-  // Z >= |s|/s0 always (triangle inequality), with equality for a pure stretch.
+  // Jha et al. 2021, eq. 14 as printed: |u_j - u_i| / |xi| / s0.
+  EXPECT_NEAR(z_displacement_term(0.002, 0.1, 0.01), 2.0, 1e-14);
+  EXPECT_NEAR(z_displacement_term(0.05 * 2.0, 2.0, 0.01), 5.0, 1e-13);
+  // the stretch measure of the authors' code: |s| / s0, compression counted too
+  EXPECT_NEAR(z_stretch_term(0.02, 0.01), 2.0, 1e-15);
+  EXPECT_NEAR(z_stretch_term(-0.005, 0.01), 0.5, 1e-15);
+  // displacement measure >= stretch measure (triangle inequality), equal for a pure stretch
   std::mt19937 gen(7);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   for (int t = 0; t < 100; ++t) {
     const Vec xi{U(gen), U(gen), U(gen)}, du{0.1 * U(gen), 0.1 * U(gen), 0.1 * U(gen)};
     const double r = norm(xi);
     const double s = stretch(norm({xi[0] + du[0], xi[1] + du[1], xi[2] + du[2]}), r);
-    EXPECT_GE(z_bond_term(norm(du), r, 0.01) + 1e-12, std::fabs(s) / 0.01);
+    EXPECT_GE(z_displacement_term(norm(du), r, 0.01) + 1e-12, z_stretch_term(s, 0.01));
+    const Vec along{0.05 * xi[0], 0.05 * xi[1], 0.05 * xi[2]}; // pure stretch by 5 %
+    const double s_along = stretch(norm({xi[0] + along[0], xi[1] + along[1], xi[2] + along[2]}), r);
+    EXPECT_NEAR(z_displacement_term(norm(along), r, 0.01), z_stretch_term(s_along, 0.01), 1e-11);
   }
-  EXPECT_NEAR(z_bond_term(0.05 * 2.0, 2.0, 0.01), 5.0, 1e-13);
+  // a rigid rotation by theta about z: the stretch measure is zero, the displacement measure
+  // 2 sin(theta/2) / s0 on every bond (so eq. 14 as printed reads Z >= 1 from theta = s0 on)
+  const double theta = 0.02, c = std::cos(theta), sn = std::sin(theta);
+  for (int t = 0; t < 20; ++t) {
+    const Vec xi{U(gen), U(gen), U(gen)};
+    const Vec y{c * xi[0] - sn * xi[1], sn * xi[0] + c * xi[1], xi[2]};
+    const Vec du{y[0] - xi[0], y[1] - xi[1], 0.0};
+    const double r = norm(xi), rxy = std::hypot(xi[0], xi[1]);
+    EXPECT_NEAR(z_stretch_term(stretch(norm(y), r), 0.01), 0.0, 1e-12);
+    EXPECT_NEAR(z_displacement_term(norm(du), r, 0.01), 2.0 * std::sin(theta / 2) * rxy / r / 0.01,
+                1e-11);
+  }
 }
 
 // Jha et al. 2021, eq. (10) for material M1 (K = 5G/3, so the bracket vanishes).

@@ -136,4 +136,45 @@ TEST_P(ComputePeridemDamage, CountsBrokenBondsOfEveryNode)
   EXPECT_EQ(lmp->atom->nbonds, 6);
 }
 
+// Z measures strain, not motion: grain 2 (a line of 3 nodes, bonds along x) turned rigidly by
+// theta keeps every bond length, so the stretch measure (the default) reads 0; eq. 14 as printed
+// (z displacement) reads |u_j - u_i| / |xi| / s0 = 2 sin(theta/2) / s0 on every bond. A node
+// then moved across its bonds shows the two measures apart: node 7 up by 0.05 stretches bond
+// 6-7 (length 1) to sqrt(1 + 0.05^2), s/s0 = 0.0125, while |du|/|xi|/s0 = 0.5.
+TEST_P(ComputePeridemDamage, ZCountsStrainNotRigidRotation)
+{
+  build(GetParam());
+  command("compute dmgd all peridem/damage z displacement\ngroup g2 molecule 2\n"
+          "displace_atoms g2 rotate 1 1 0 0 0 1 17 units box\nrun 0 post no");
+  const double theta = 17.0 * std::acos(-1.0) / 180.0;
+  auto **z = static_cast<double **>(lammps_extract_compute(lmp, "dmg", 1, 2));
+  auto **zd = static_cast<double **>(lammps_extract_compute(lmp, "dmgd", 1, 2));
+  for (tagint tag : {5, 6, 7}) {
+    const int i = lmp->atom->map(tag);
+    if (i < 0 || i >= lmp->atom->nlocal) continue;
+    EXPECT_NEAR(z[i][1], 0.0, 1e-12) << "stretch measure of atom " << tag;
+    EXPECT_NEAR(zd[i][1], 2.0 * std::sin(theta / 2.0) / 0.1, 1e-12)
+        << "displacement measure of atom " << tag;
+  }
+  auto *v = static_cast<double *>(lammps_extract_compute(lmp, "dmg", 0, 1));
+  EXPECT_EQ(v[1], 0.0) << "a rigid rotation breaks no bond";
+
+  // undo the rotation, then move node 7 across its bonds
+  command("displace_atoms g2 rotate 1 1 0 0 0 1 -17 units box\n"
+          "set atom 7 y 1.05\nrun 0 post no");
+  z = static_cast<double **>(lammps_extract_compute(lmp, "dmg", 1, 2));
+  zd = static_cast<double **>(lammps_extract_compute(lmp, "dmgd", 1, 2));
+  const double s67 = std::sqrt(1.0 + 0.05 * 0.05) - 1.0;
+  const std::map<tagint, std::pair<double, double>> expected = {
+      {6, {s67 / 0.1, 0.5}},
+      {7, {s67 / 0.1, 0.5}},
+      {5, {(std::sqrt(4.0 + 0.0025) / 2.0 - 1.0) / 0.1, 0.25}}};
+  for (const auto &[tag, e] : expected) {
+    const int i = lmp->atom->map(tag);
+    if (i < 0 || i >= lmp->atom->nlocal) continue;
+    EXPECT_NEAR(z[i][1], e.first, 1e-9) << "stretch measure of atom " << tag;
+    EXPECT_NEAR(zd[i][1], e.second, 1e-9) << "displacement measure of atom " << tag;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Newton, ComputePeridemDamage, ::testing::Values("on", "off"));

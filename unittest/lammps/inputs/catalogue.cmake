@@ -59,8 +59,12 @@ peridem_catalogue_error(compute_bed_no_region "Illegal compute peridem/bed comma
   -var bad "compute b all peridem/bed")
 peridem_catalogue_error(compute_bed_unknown_keyword "Illegal compute peridem/bed command: unknown keyword colour"
   -var pre "region r2 block 0 1 0 1 0 1" -var bad "compute b all peridem/bed r2 colour red")
-peridem_catalogue_error(compute_damage_args "Illegal compute peridem/damage command: it takes no arguments"
+peridem_catalogue_error(compute_damage_args "Illegal compute peridem/damage command: unknown keyword extra"
   -var bad "compute d all peridem/damage extra")
+peridem_catalogue_error(compute_damage_z_value "Illegal compute peridem/damage command: keyword z needs a value"
+  -var bad "compute d all peridem/damage z")
+peridem_catalogue_error(compute_damage_z_choice "compute peridem/damage: z must be stretch or displacement, not strain"
+  -var bad "compute d all peridem/damage z strain")
 peridem_catalogue_error(compute_dilation_args "Illegal compute peridem/dilation command: it takes no arguments"
   -var bad "compute d all peridem/dilation extra")
 peridem_catalogue_error(compute_fragments_min "Illegal compute peridem/fragments command: min needs nodes N or volume V"
