@@ -9,7 +9,7 @@
 # The fracture variants of Jha et al.'s (2021) two-particle tests
 # (examples/two-particle-fracture), reduced to the first 250 us (the impact) at
 # v0 = 2 and 5 m/s: in §4.2 with different materials the stronger M2 grain
-# keeps every bond and its Z (eq. 14) stays below 1, while the M1 grain between
+# keeps every bond and its Z (bond stretch over s0) stays below 1, while the M1 grain between
 # it and the M2 wall breaks bonds at 5 m/s and more than at 2 m/s (none); in the
 # §4.1 drop (M1 on M1) the peak Z grows with v0; a hexagon dropped at 8 m/s
 # onto a fixed concave grain (§4.3, Fig. 20) breaks bonds at its corners.
