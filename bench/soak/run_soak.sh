@@ -36,6 +36,11 @@
 #   SOAK_CONTINUE  step of the restart file to continue from (default SOAK_EVERY;
 #                  0: no continuation)
 #   SOAK_CONTINUE_STEPS  steps of the continuation (default SOAK_EVERY)
+#   SOAK_MALLOC    "fixed" (default): glibc's mmap threshold fixed at 128 KiB
+#                  (GLIBC_TUNABLES), so that the 21 MB buffer of each restart
+#                  write goes back to the system when freed; "default": glibc's
+#                  dynamic threshold, under which the freed buffers stay in the
+#                  heap and RSS grows by up to ~100 MB (doc/soak.md, "Memory")
 # Usage: bench/soak/run_soak.sh [BUILD_DIR] (about 1-2 h on 2 idle cores).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -50,6 +55,9 @@ every="${SOAK_EVERY:-10000}"
 thermo="${SOAK_THERMO:-1000}"
 cont="${SOAK_CONTINUE:-$every}"
 cont_steps="${SOAK_CONTINUE_STEPS:-$every}"
+if [ "${SOAK_MALLOC:-fixed}" = fixed ]; then
+  export GLIBC_TUNABLES="glibc.malloc.mmap_threshold=131072${GLIBC_TUNABLES:+:$GLIBC_TUNABLES}"
+fi
 work="${SOAK_DIR:-$(mktemp -d /tmp/peridem-soak.XXXXXX)}"
 mkdir -p "$work"
 cd "$work"
