@@ -291,7 +291,10 @@ void CreatePeridemGrains::command(int narg, char **arg)
 void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
 {
   if (narg < 2) error->all(FLERR, "Illegal {} command: expected atom type and shape", CMD);
-  o.type = int(peridem_lmp::integer(lmp, CMD, "atom type", arg[0]));
+  // types are checked here against the box, before they are stored in an int
+  o.type = peridem_lmp::integer(lmp, CMD, "atom type", arg[0], 1, atom->ntypes);
+  if (atom->nbondtypes == 0)
+    error->all(FLERR, "{}: the box has no bond types; set bond/types in create_box", CMD);
   o.shape = arg[1];
   int iarg = 2;
 
@@ -360,7 +363,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       iarg += 2;
     } else if (key == "bond/type") {
       need(1, "bond/type");
-      o.bond_type = int(peridem_lmp::integer(lmp, CMD, key, arg[iarg++]));
+      o.bond_type = peridem_lmp::integer(lmp, CMD, key, arg[iarg++], 1, atom->nbondtypes);
     } else if (key == "rotate") {
       need(1, "rotate");
       o.rotate_given = true;
@@ -463,14 +466,6 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
 
 void CreatePeridemGrains::check(const Options &o)
 {
-  if (o.type <= 0 || o.type > atom->ntypes)
-    error->all(FLERR, "{}: invalid atom type {} (the box has {} atom types)", CMD, o.type,
-               atom->ntypes);
-  if (atom->nbondtypes == 0)
-    error->all(FLERR, "{}: the box has no bond types; set bond/types in create_box", CMD);
-  if (o.bond_type <= 0 || o.bond_type > atom->nbondtypes)
-    error->all(FLERR, "{}: invalid bond type {} (the box has {} bond types)", CMD, o.bond_type,
-               atom->nbondtypes);
   if (o.at.empty()) error->all(FLERR, "{}: no grain position given (use at x y z)", CMD);
   if (o.axis_given && o.rotate_seed > 0)
     error->all(FLERR, "{}: axis applies to a fixed rotate angle, not to rotate random", CMD);

@@ -70,4 +70,14 @@ long long integer(LAMMPS *lmp, const std::string &command, const std::string &ke
   return v;
 }
 
+int integer(LAMMPS *lmp, const std::string &command, const std::string &keyword, const char *value,
+            int lo, int hi)
+{
+  const long long v = integer(lmp, command, keyword, value);
+  if (v < lo || v > hi)
+    lmp->error->all(FLERR, "{}: {} must be an integer from {} to {}, not {}", command, keyword, lo,
+                    hi, v);
+  return static_cast<int>(v);
+}
+
 } // namespace peridem_lmp

@@ -43,6 +43,12 @@ double number(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::str
 long long integer(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
                   const char *value);
 
+// integer() for a value stored in an int (an atom or bond type): outside [lo, hi] it ends
+// the run with "<command>: <keyword> must be an integer from <lo> to <hi>, not <value>"
+// instead of wrapping (4294967297 would become 1 in an int).
+int integer(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
+            const char *value, int lo, int hi);
+
 } // namespace peridem_lmp
 
 #endif

@@ -12,8 +12,13 @@ LAMMPS logs of one input (e.g. 1 and 2 MPI ranks) over the steps both reached,
 also when a run is still going (no "Loop time" line yet). Prints, per column,
 the first step whose values differ by more than rtol (relative, default 1e-9)
 and the largest relative difference; exits 1 when a column differs before
---window steps (default: never, the comparison is reported only)."""
+--window steps (default: never, the comparison is reported only).
+--digits also prints, per common step, how many significant digits all columns
+share (the fewest over the columns, from the relative difference: 1e-9 -> 9;
+"all" when every printed digit agrees) and the column that has the fewest: for a
+run continued from a restart file against the uninterrupted run."""
 import argparse
+import math
 import sys
 
 
@@ -39,6 +44,7 @@ def main():
     ap.add_argument("b")
     ap.add_argument("--rtol", type=float, default=1e-9)
     ap.add_argument("--window", type=int, default=-1)
+    ap.add_argument("--digits", action="store_true")
     a = ap.parse_args()
     ha, ta = rows(a.a)
     hb, tb = rows(a.b)
@@ -48,6 +54,19 @@ def main():
     print(f"compare_thermo: {len(steps)} common rows, steps {steps[0]}..{steps[-1]} "
           f"({a.a} reached {max(ta)}, {a.b} reached {max(tb)})")
     fail = False
+    if a.digits:
+        print("  step  digits shared by all columns (fewest in)")
+        for s in steps:
+            fewest, where = None, ""
+            for j, name in enumerate(ha[1:], 1):
+                x, y = ta[s][j], tb[s][j]
+                if x == y:
+                    continue
+                d = -math.log10(abs(x - y) / max(abs(x), abs(y)))
+                if fewest is None or d < fewest:
+                    fewest, where = d, name
+            shared = "all" if fewest is None else f"{fewest:.1f} ({where})"
+            print(f"  {s:>6}  {shared}")
     for j, name in enumerate(ha[1:], 1):
         first, worst = None, 0.0
         for s in steps:

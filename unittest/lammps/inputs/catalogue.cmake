@@ -121,7 +121,7 @@ peridem_catalogue_error(pair_coeff_not_mixed "pair_style peridem/contact: types 
   -var pre "pair_style peridem/contact" -var pre2 "pair_coeff 1 1 Kn 1e23 Rc 1e-3 Kn_form eps5" -var bad "pair_coeff 2 2 Kn 1e23 Rc 1e-3 damping nodal 0.5")
 peridem_catalogue_error(grains_no_args "Illegal create_peridem_grains command: expected atom type and shape"
   -var bad "create_peridem_grains")
-peridem_catalogue_error(grains_bad_type "create_peridem_grains: invalid atom type 7 \\(the box has 2 atom types\\)"
+peridem_catalogue_error(grains_bad_type "create_peridem_grains: atom type must be an integer from 1 to 2, not 7"
   -var bad "create_peridem_grains 7 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3")
 peridem_catalogue_error(grains_no_at "create_peridem_grains: no grain position given \\(use at x y z\\)"
   -var bad "create_peridem_grains 1 sphere radius 1e-3 spacing 5e-4 horizon 1e-3")

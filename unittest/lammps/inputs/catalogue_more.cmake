@@ -149,8 +149,17 @@ peridem_catalogue_error(grains_rotate_with_angles "create_peridem_grains: rotate
   -var bad "create_peridem_grains 1 sphere radius 1e-3 positions ${_cat}/pos_angles.txt rotate 30 spacing 5e-4 horizon 1e-3 density 1000")
 peridem_catalogue2d(grains_no_bond_types "create_peridem_grains: the box has no bond types; set bond/types in create_box"
   -var box_cmd "create_box 2 box" -var bad "${_disk}")
-peridem_catalogue_error(grains_bond_type_range "create_peridem_grains: invalid bond type 3 \\(the box has 2 bond types\\)"
+peridem_catalogue_error(grains_bond_type_range "create_peridem_grains: bond/type must be an integer from 1 to 2, not 3"
   -var bad "${_sphere} bond/type 3")
+# types are ints: 2^32 + 1 and 2^32 + 2 would wrap to the valid types 1 and 2
+peridem_catalogue_error(grains_wrap_type "create_peridem_grains: atom type must be an integer from 1 to 2, not 4294967297"
+  -var bad "create_peridem_grains 4294967297 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 density 1000")
+peridem_catalogue_error(grains_wrap_bond_type "create_peridem_grains: bond/type must be an integer from 1 to 2, not 4294967298"
+  -var bad "${_sphere} bond/type 4294967298")
+peridem_catalogue_error(grains_zero_type "create_peridem_grains: atom type must be an integer from 1 to 2, not 0"
+  -var bad "create_peridem_grains 0 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 density 1000")
+peridem_catalogue_error(grains_negative_bond_type "create_peridem_grains: bond/type must be an integer from 1 to 2, not -4294967295"
+  -var bad "${_sphere} bond/type -4294967295")
 peridem_catalogue_error(grains_gmsh_spacing "create_peridem_grains: gmsh grains take the spacing from the mesh"
   -var bad "create_peridem_grains 1 gmsh none.msh spacing 1e-4 at 5e-3 5e-3 5e-3 horizon 1e-3 density 1000")
 peridem_catalogue_error(grains_boundary_not_gmsh "create_peridem_grains: boundary is only used with gmsh meshes"

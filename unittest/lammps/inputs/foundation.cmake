@@ -44,10 +44,9 @@ set_tests_properties(python.lmp_command_route python.module_route PROPERTIES
   ENVIRONMENT "PERIDEM_LIBRARY=$<TARGET_FILE:peridem>")
 
 add_test(NAME preload.clear_keeps_styles
-  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "PERIDEM-ROUTE-OK after clear" lmp
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "PERIDEM-ROUTE-OK after clear"
+          ${PERIDEM_RUN}/preload.sh $<TARGET_FILE:peridem> lmp
           -in ${_in}/clear_keeps_styles.in -log none -var inputs ${_in})
-set_tests_properties(preload.clear_keeps_styles PROPERTIES
-  ENVIRONMENT "LD_PRELOAD=$<TARGET_FILE:peridem>")
 endif()
 
 # configuration stops with a clear message when the LAMMPS headers are

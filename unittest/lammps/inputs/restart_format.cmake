@@ -24,3 +24,14 @@ add_test(NAME restart.contact_format1_read
           ${_in}/restart_format contact_v1_vs_v2.in
           ${CMAKE_CURRENT_BINARY_DIR}/restart_format_v1 ""
           "1" "1 -var make 0 -var file v1_pair.restart" "2 -var make 0 -var file v1_pair.restart")
+
+# a bed compacted by a moving lid (the soak's input on 12 grains: contact with
+# nodal damping and friction, gravity, fix peridem/wall, broken bonds) continues
+# through a restart file as the same two runs without one, on 1 and 2 ranks
+foreach(_np 1 2)
+  add_test(NAME restart.bed_continue_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${_in}/bed_restart.in -log none -echo none
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag np${_np}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+endforeach()
