@@ -39,20 +39,28 @@ ap.add_argument("--lmp", default=os.path.join(here, "../../build/lmp_peridem"))
 ap.add_argument("--potentials", default=os.path.join(here, "../../potentials"))
 ap.add_argument("--cases", default="1,2,3,4")
 ap.add_argument("--out", default="mesh_run")
+ap.add_argument("--gap", type=float, default=3.0, help="starting gap in units of h (default 3)")
+ap.add_argument("--concurrent", action="store_true", help="run eps_n = 1 and 0.95 at once")
 a = ap.parse_args()
 a.lmp, a.potentials, a.out = map(os.path.abspath, (a.lmp, a.potentials, a.out))
 os.makedirs(a.out, exist_ok=True)
 
 
-def restitution(case, eps):
+def start(case, eps):
     h, hor = PAPER[case][0] * 1e-3, PAPER[case][1] * 1e-3
     dt = 5e-8 * (h / 0.1423e-3) ** 1.5
     log = os.path.join(a.out, "log.mesh%d_eps_%g" % (case, eps))
     cmd = [a.lmp, "-in", os.path.join(here, "in.restitution"), "-echo", "none", "-screen", "none",
            "-log", log, "-var", "eps_n", str(eps), "-var", "onset", str(ONSET),
-           "-var", "potentials", a.potentials, "-var", "h", "%.6g" % h,
-           "-var", "horizon", "%.6g" % hor, "-var", "dt", "%.4g" % dt, "-var", "g0", "%.6g" % (3 * h)]
-    subprocess.run(cmd, check=True, cwd=a.out)
+           "-var", "potentials", a.potentials, "-var", "h", "%.6g" % h, "-var", "horizon",
+           "%.6g" % hor, "-var", "dt", "%.4g" % dt, "-var", "g0", "%.6g" % (a.gap * h)]
+    return subprocess.Popen(cmd, cwd=a.out), log, dt
+
+
+def result(job):
+    proc, log, dt = job
+    if proc.wait() != 0:
+        sys.exit("lmp failed, see " + log)
     text = open(log).read()
     m = re.search(r"PERIDEM-RESTITUTION eps_n \S+ H1 (\S+) CR (\S+) steps (\d+)", text)
     if not m:
@@ -69,8 +77,12 @@ with open(dat, "w") as f:
             " CR095_ours loop_s\n")
 for case in [int(c) for c in a.cases.split(",")]:
     h, hor, pdt, p1, p95 = PAPER[case]
-    c1, n1, dt, rec, atoms, t1 = restitution(case, 1.0)
-    c95, n95, _, _, _, t95 = restitution(case, 0.95)
+    if a.concurrent:
+        jobs = [start(case, 1.0), start(case, 0.95)]
+        (c1, n1, dt, rec, atoms, t1), (c95, n95, _, _, _, t95) = map(result, jobs)
+    else:
+        c1, n1, dt, rec, atoms, t1 = result(start(case, 1.0))
+        c95, n95, _, _, _, t95 = result(start(case, 0.95))
     line = "%d %g %g %.3g %.3g %d %.3f %.4f %.3f %.4f %.0f" % (case, h, hor, dt * 1e9, rec * 1e9,
                                                                atoms, p1, c1, p95, c95, t1 + t95)
     print(line, flush=True)
