@@ -18,9 +18,16 @@ paper scales R_c with h: at the finer meshes it is a prediction); the time step 
 (h / 0.1423 mm)^1.5 (the contact's stiffness per node mass, K_n V^2 / m ~ eps^-5 h^2, scales
 as h^-3 when eps is proportional to h), which is 0.28, 0.22, 0.20 and 0.16 of the package's
 estimate (176, 96.4, 71.7, 42.6 ns: Table 4's horizons are not exactly proportional to h); the
-falling disk starts 3 h above the contact with the speed of the 1 mm fall (ballistic).
+falling disk starts 3 h above the contact with the speed of the 1 mm fall (ballistic; --gap G
+starts it G h above: the free fall leaves the disk undeformed, so any start above the dashpot onset
+gives the same impact up to the phase of the time steps, and a smaller gap saves steps).
+--concurrent runs the elastic and the damped run of a test at the same time (two processes).
+--grains lps: state-based grains (bond_style peridem/lps plane 3d) with the onset of Jha et al.'s
+code, 1.01 R_c (README.md, (c)).
 
-Writes mesh.dat and mesh.png. usage: run_mesh.py [--lmp PATH] [--cases 1,2,3,4] [--out DIR]
+Writes mesh.dat and mesh.png.
+usage: run_mesh.py [--lmp PATH] [--cases 1,2,3,4] [--out DIR] [--gap G] [--concurrent]
+                   [--grains bond|lps]
 """
 import argparse
 import os
@@ -39,20 +46,32 @@ ap.add_argument("--lmp", default=os.path.join(here, "../../build/lmp_peridem"))
 ap.add_argument("--potentials", default=os.path.join(here, "../../potentials"))
 ap.add_argument("--cases", default="1,2,3,4")
 ap.add_argument("--out", default="mesh_run")
+ap.add_argument("--gap", type=float, default=3.0, help="starting gap in units of h (default 3)")
+ap.add_argument("--concurrent", action="store_true", help="run eps_n = 1 and 0.95 at once")
+ap.add_argument("--grains", choices=["bond", "lps"], default="bond",
+                help="bond-based (default, onset 1.006 R_c) or state-based grains (onset 1.01 R_c)")
 a = ap.parse_args()
 a.lmp, a.potentials, a.out = map(os.path.abspath, (a.lmp, a.potentials, a.out))
 os.makedirs(a.out, exist_ok=True)
+if a.grains == "lps":
+    ONSET = 1.01  # Jha et al.'s code: centres closer than R + R' + 1.01 R_c
 
 
-def restitution(case, eps):
+def start(case, eps):
     h, hor = PAPER[case][0] * 1e-3, PAPER[case][1] * 1e-3
     dt = 5e-8 * (h / 0.1423e-3) ** 1.5
     log = os.path.join(a.out, "log.mesh%d_eps_%g" % (case, eps))
     cmd = [a.lmp, "-in", os.path.join(here, "in.restitution"), "-echo", "none", "-screen", "none",
-           "-log", log, "-var", "eps_n", str(eps), "-var", "onset", str(ONSET),
-           "-var", "potentials", a.potentials, "-var", "h", "%.6g" % h,
-           "-var", "horizon", "%.6g" % hor, "-var", "dt", "%.4g" % dt, "-var", "g0", "%.6g" % (3 * h)]
-    subprocess.run(cmd, check=True, cwd=a.out)
+           "-log", log, "-var", "eps_n", str(eps), "-var", "onset", str(ONSET), "-var", "grains", a.grains,
+           "-var", "potentials", a.potentials, "-var", "h", "%.6g" % h, "-var", "horizon",
+           "%.6g" % hor, "-var", "dt", "%.4g" % dt, "-var", "g0", "%.6g" % (a.gap * h)]
+    return subprocess.Popen(cmd, cwd=a.out), log, dt
+
+
+def result(job):
+    proc, log, dt = job
+    if proc.wait() != 0:
+        sys.exit("lmp failed, see " + log)
     text = open(log).read()
     m = re.search(r"PERIDEM-RESTITUTION eps_n \S+ H1 (\S+) CR (\S+) steps (\d+)", text)
     if not m:
@@ -69,8 +88,12 @@ with open(dat, "w") as f:
             " CR095_ours loop_s\n")
 for case in [int(c) for c in a.cases.split(",")]:
     h, hor, pdt, p1, p95 = PAPER[case]
-    c1, n1, dt, rec, atoms, t1 = restitution(case, 1.0)
-    c95, n95, _, _, _, t95 = restitution(case, 0.95)
+    if a.concurrent:
+        jobs = [start(case, 1.0), start(case, 0.95)]
+        (c1, n1, dt, rec, atoms, t1), (c95, n95, _, _, _, t95) = map(result, jobs)
+    else:
+        c1, n1, dt, rec, atoms, t1 = result(start(case, 1.0))
+        c95, n95, _, _, _, t95 = result(start(case, 0.95))
     line = "%d %g %g %.3g %.3g %d %.3f %.4f %.3f %.4f %.0f" % (case, h, hor, dt * 1e9, rec * 1e9,
                                                                atoms, p1, c1, p95, c95, t1 + t95)
     print(line, flush=True)
@@ -85,7 +108,7 @@ import matplotlib.pyplot as plt
 rows = [list(map(float, l.split())) for l in open(sys.argv[1]) if l.strip() and l[0] != "#"]
 fig, ax = plt.subplots(figsize=(5.5, 4))
 ax.plot([r[1] for r in rows], [r[8] for r in rows], "s--", label="Jha et al. 2021, Table 4")
-ax.plot([r[1] for r in rows], [r[9] for r in rows], "o-", label="PERIDEM (onset 1.006 R_c)")
+ax.plot([r[1] for r in rows], [r[9] for r in rows], "o-", label="PERIDEM (%s)" % sys.argv[3])
 ax.set_xlabel("mesh size h (mm), horizon as Table 4")
 ax.set_ylabel("C_R at eps_n = 0.95")
 ax.invert_xaxis()
@@ -95,4 +118,4 @@ fig.savefig(sys.argv[2], dpi=120)
 """
 sys.path.insert(0, here)
 from plot_png import plot  # noqa: E402
-plot(PLOT, dat, os.path.join(a.out, "mesh.png"))
+plot(PLOT, dat, os.path.join(a.out, "mesh.png"), "%s, onset %g R_c" % (a.grains, ONSET))
