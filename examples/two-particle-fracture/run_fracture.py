@@ -12,14 +12,17 @@ simulations", §4.2 two particles and a wall, §4.3 non-circular particles) with
 
 Series (name: setup, paper's figure):
   drop2  §4.1, test 2 of Table 2 (M1 on M1, R 1 mm on 1 mm, bottom fixed and rigid), Fig. 7-8
-  drop10 §4.1, test 10 of Table 3 (M2 R 3 mm on M1 R 1 mm, bottom fixed and rigid), Fig. 9-10
+  drop10 §4.1, test 10 of Table 3 as Jha et al.'s code sets it up (M1 R 1 mm falling on a
+         fixed, rigid M2 R 3 mm: particle 1 is fixed, particle 2 falls; examples/two-particle-mixed)
+  drop10top the reading of earlier versions (M2 R 3 mm falling on a fixed M1 R 1 mm), Fig. 9-10
   wallsame §4.2, M1 R 2 mm on M1 R 1 mm on an M1 wall, Fig. 14-15
   walldiff §4.2, M2 R 2 mm on M1 R 1 mm on an M2 wall, Fig. 16-17
   drum   §4.3, concave R 1 mm on concave R 1.5 mm (bottom fixed), M1, v0 = 8 m/s, Fig. 19
   hex    §4.3, hexagon R 1 mm on concave R 1.5 mm (bottom fixed), M1, v0 = 8 m/s, Fig. 20
   drumwall §4.3, concave R 1.5 mm on concave R 1 mm on a wall, M1, v0 = 5 m/s (ours), Fig. 21
 each at v0 = 2, 4, 5 m/s (drum, hex: 8 m/s). Per grain: broken bonds (nodes with damage
-phi > 0), the fracture zone FZ (nodes with Z >= 1, Jha et al. 2021 eq. 14-15) at its peak during
+phi > 0), the fracture zone FZ (nodes with Z >= 1, Jha et al. 2021 eq. 14-15, Z from the bond
+stretch; Z of eq. 14 as printed beside it) at its peak during
 the run and at the end, the largest Z.
 
 Writes fracture.dat, fracture.png (damaged nodes against v0) and damage_*.png (the damage
@@ -43,8 +46,10 @@ here = os.path.dirname(os.path.abspath(__file__))
 M2 = ["-var", "dt", "1.5e-8"]  # M2: below the package's recommended 18.3 ns (M2 against M2)
 SERIES = {
     "drop2": ["-var", "setup", "drop", "-var", "trun", "4e-4"],
-    "drop10": ["-var", "setup", "drop", "-var", "Rtop", "3e-3", "-var", "mtop", "M2",
+    "drop10": ["-var", "setup", "drop", "-var", "Rbot", "3e-3", "-var", "mbot", "M2",
                "-var", "trun", "4e-4"] + M2,
+    "drop10top": ["-var", "setup", "drop", "-var", "Rtop", "3e-3", "-var", "mtop", "M2",
+                  "-var", "trun", "4e-4"] + M2,
     "wallsame": ["-var", "setup", "wall", "-var", "Rtop", "2e-3", "-var", "trun", "1e-3"],
     "walldiff": ["-var", "setup", "wall", "-var", "Rtop", "2e-3", "-var", "mtop", "M2",
                  "-var", "mwall", "M2", "-var", "trun", "1e-3"] + M2,
