@@ -14,10 +14,10 @@ Reads LAMMPS text dumps (``dump custom`` and ``dump local``) and
 
 * ``crack_angle``: the path and angle of a crack from a damage field
   (e.g. ``c_dmg[1]`` of compute peridem/damage in a dump): the principal
-  axis of the damaged nodes, weighted by their damage (grain-shape paper
+  axis of the damaged nodes, weighted by their damage (Bhattacharya & Lipton 2023,
   §6.2 compares crack paths);
 * ``plot_vs_volume_fraction``: bulk damage and wall force against the
-  volume fraction (grain-shape paper §7.4, Fig. 14), from a fix ave/time
+  volume fraction (Bhattacharya & Lipton 2023, §7.4, Fig. 14), from a fix ave/time
   file of ``c_bed[6]``, ``c_dmg`` and a wall force;
 * ``snapshot``: the nodes coloured by damage or by fragment ID.
 

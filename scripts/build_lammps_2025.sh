@@ -138,14 +138,29 @@ sync_file() { # from to: copies only a changed file, so that make recompiles onl
 # also lists the per-file options of the package's files (PERIDEM.cmake): a change of those
 # alone would recompile all of LAMMPS (47 min). When flags.make differs from the one of the
 # last in-tree build only in lines naming src/PERIDEM/ (and blank lines), it gets that build's time back and the
-# package's own objects are removed, so that only they recompile.
+# package's own objects are removed, so that only they recompile. The first in-tree build after the
+# plain one also adds the package's folder to every file's include path (CXX_INCLUDES): that
+# changes no LAMMPS object as long as no header of the package has the name of one of LAMMPS's
+# (checked), so that folder is left out of the comparison too (without this, the first in-tree
+# build recompiled all of LAMMPS: 27 min at -j2).
 flags_last="$build/peridem-flags.make.last"
 save_flags() { cp -p "$build/CMakeFiles/lammps.dir/flags.make" "$flags_last"; }
+flags_outside_package() { # flags.make without the package's lines and include folder
+  sed -e "s# -I$src/src/PERIDEM\( \|\$\)# #" -e 's/ *$//' "$1" | grep -v -e /PERIDEM/ -e '^$'
+}
+package_header_shadows() { # true if a header of the package has the name of one of LAMMPS's
+  local h
+  for h in "$src"/src/PERIDEM/*.h; do
+    [ -n "$(find "$src/src" -maxdepth 2 -name "$(basename "$h")" -not -path '*/PERIDEM/*')" ] && return 0
+  done
+  return 1
+}
 keep_lammps_objects() {
   local flags="$build/CMakeFiles/lammps.dir/flags.make"
   [ -f "$flags_last" ] && [ -f "$flags" ] || return 0
   cmp -s "$flags" "$flags_last" && return 0
-  if cmp -s <(grep -v -e /PERIDEM/ -e '^$' "$flags") <(grep -v -e /PERIDEM/ -e '^$' "$flags_last"); then
+  package_header_shadows && return 0
+  if cmp -s <(flags_outside_package "$flags") <(flags_outside_package "$flags_last"); then
     echo "flags.make: only the package's lines changed; LAMMPS's objects kept"
     touch -r "$flags_last" "$flags"
     find "$build/CMakeFiles/lammps.dir" -path '*/src/PERIDEM/*.o' -delete

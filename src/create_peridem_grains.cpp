@@ -227,7 +227,7 @@ struct CreatePeridemGrains::Options {
   long long rotate_seed = 0; // > 0: random rotation
   int bond_type = 1;
   peridem::NodalVolume volume = peridem::NodalVolume::CellArea;
-  peridem::Pruning pruning = peridem::Pruning::Seed;
+  peridem::Pruning pruning = peridem::Pruning::ExtendedBoundary;
   std::vector<peridem::CutSegment> notches;
   bool is_solid() const { return solid_shapes().count(shape) > 0; }
 };
@@ -402,14 +402,15 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     } else if (key == "pruning") {
       need(1, "pruning");
       const std::string v = arg[iarg++];
-      if (v == "seed")
-        o.pruning = peridem::Pruning::Seed;
+      // "seed": the keyword's first name, still accepted
+      if (v == "extended" || v == "seed")
+        o.pruning = peridem::Pruning::ExtendedBoundary;
       else if (v == "exact")
         o.pruning = peridem::Pruning::Exact;
       else if (v == "off")
         o.pruning = peridem::Pruning::None;
       else
-        error->all(FLERR, "{}: unknown pruning '{}' (use seed, exact or off)", CMD, v);
+        error->all(FLERR, "{}: unknown pruning '{}' (use extended, exact or off)", CMD, v);
     } else if (key == "notch") {
       need(4, "notch");
       double v[4];

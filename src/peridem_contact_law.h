@@ -329,12 +329,12 @@ inline double grain_node_share(double node_volume, double grain_volume)
 //            (4.7) at distance
 //              d = R_c - delta_s (wall_contact_stiffness), counted once (rigid partner).
 //            One body at a time: a node pressed into one body has its own grain on the other
-//            side.  The penetrations of the papers' runs are far below delta_s (the grain-shape
-//            bed: delta_s = 0.35 h = 22 um, reached with eps^5 only by ~1 J/m per node against
-//            ~1e-4 J/m of kinetic energy a node has after falling the box height); runs that
-//            press nodes deeper (crushing, compaction to overlap) need a smaller step than this
-//            estimate: n_contacts overrides n_eff/2 (effective pair springs).
-//            dt_c = (2/omega_c) (sqrt(1+zeta^2) - zeta), zeta the damping ratio of one pair.
+//            side.  The penetrations of the papers' runs are far below delta_s (the bed of
+//            Bhattacharya & Lipton 2023: delta_s = 0.35 h = 22 um, reached with eps^5 only by ~1
+//            J/m per node against ~1e-4 J/m of kinetic energy a node has after falling the box
+//            height); runs that press nodes deeper (crushing, compaction to overlap) need a smaller
+//            step than this estimate: n_contacts overrides n_eff/2 (effective pair springs). dt_c =
+//            (2/omega_c) (sqrt(1+zeta^2) - zeta), zeta the damping ratio of one pair.
 //  combined: omega^2 <= omega_b^2 + omega_c^2  =>  dt = 1/sqrt(1/dt_b^2 + 1/dt_c^2);
 //            recommended = safety * dt.
 // Measured thresholds against this estimate: doc/pair_peridem_contact.rst.

@@ -70,7 +70,7 @@ Shape3D Shape3D::extrusion(const Polygon &section, double height)
   s.kind_ = Kind::Extrusion;
   s.c_ = 0.5 * height;
   s.section_ = section;
-  s.convexSection_ = SeedPruner(section).convex();
+  s.convexSection_ = ExtendedBoundaryPruner(section).convex();
   return s;
 }
 
@@ -196,13 +196,13 @@ std::vector<Bond> create_bonds_3d(const Shape3D &s, const std::vector<Vec3> &x, 
   }
   std::vector<Bond> bonds = pairs_within_horizon(c, 3, eps);
   if (pruning == Pruning::None || s.convex()) return bonds;
-  const bool seed = pruning == Pruning::Seed;
-  const SeedPruner pruner(s.section());
+  const bool extended = pruning == Pruning::ExtendedBoundary;
+  const ExtendedBoundaryPruner pruner(s.section());
   bonds.erase(std::remove_if(bonds.begin(), bonds.end(),
                              [&](const Bond &b) {
                                const Vec3 &p = x[b.first], &q = x[b.second];
-                               return seed ? !pruner.keeps(xy(p), xy(q))
-                                           : !segment_inside_exact_3d(s, p, q);
+                               return extended ? !pruner.keeps(xy(p), xy(q))
+                                               : !segment_inside_exact_3d(s, p, q);
                              }),
               bonds.end());
   return bonds;

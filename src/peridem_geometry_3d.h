@@ -79,9 +79,10 @@ Nodes3D lattice_nodes_3d(const Shape3D &s, double h, const Vec3 &offset = Vec3()
 bool segment_inside_exact_3d(const Shape3D &s, const Vec3 &p, const Vec3 &q);
 
 // Bonds within the horizon (cell list), pruned for nonconvex extrusions with
-// the method of Bhattacharya & Lipton 2023, §5, on the projection (Seed) or the exact test (Exact).
+// the method of Bhattacharya & Lipton 2023, §5, on the projection (ExtendedBoundary) or the exact
+// test (Exact).
 std::vector<Bond> create_bonds_3d(const Shape3D &s, const std::vector<Vec3> &x, double eps,
-                                  Pruning pruning = Pruning::Seed);
+                                  Pruning pruning = Pruning::ExtendedBoundary);
 
 } // namespace peridem
 

@@ -99,8 +99,8 @@ std::vector<Bond> create_bonds(const Polygon &D, const std::vector<Vec2> &x, dou
 {
   std::vector<Bond> bonds = pairs_within_horizon(x, eps);
   if (pruning == Pruning::None) return bonds;
-  if (pruning == Pruning::Seed) {
-    const SeedPruner pruner(D);
+  if (pruning == Pruning::ExtendedBoundary) {
+    const ExtendedBoundaryPruner pruner(D);
     if (pruner.convex()) return bonds;
     bonds.erase(
         std::remove_if(bonds.begin(), bonds.end(),

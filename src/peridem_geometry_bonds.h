@@ -40,14 +40,14 @@ std::vector<Bond> pairs_within_horizon(const std::vector<double> &coords, int di
 std::vector<Bond> pairs_within_horizon(const std::vector<Vec2> &x, double eps);
 
 enum class Pruning {
-  None,  // keep every pair within the horizon (convex grains)
-  Seed,  // Bhattacharya & Lipton 2023, §5 (extended boundary + cusp bisectors)
-  Exact, // exact segment-in-shape reference test
+  None,             // keep every pair within the horizon (convex grains)
+  ExtendedBoundary, // Bhattacharya & Lipton 2023, §5 (extended boundary + cusp bisectors)
+  Exact,            // exact segment-in-shape reference test
 };
 
 // Bonds of one 2D grain D with nodes x (inside D) and horizon eps.
 std::vector<Bond> create_bonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
-                               Pruning pruning = Pruning::Seed);
+                               Pruning pruning = Pruning::ExtendedBoundary);
 
 // A straight cut (pre-notch or crack) in reference coordinates.
 struct CutSegment {

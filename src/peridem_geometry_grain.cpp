@@ -83,7 +83,7 @@ Grain2D mesh_grain(const Mesh2D &mesh, double eps, const Polygon *shape,
       hmin = std::min(hmin, (mesh.vertices[q[k]] - mesh.vertices[q[(k + 1) % 4]]).norm());
   check_spacing(hmin, eps);
   check_node_count(g.nodes.size(), hmin);
-  g.bonds = shape ? create_bonds(*shape, g.nodes.x, eps, Pruning::Seed)
+  g.bonds = shape ? create_bonds(*shape, g.nodes.x, eps, Pruning::ExtendedBoundary)
                   : pairs_within_horizon(g.nodes.x, eps);
   remove_bonds_crossing(g.bonds, g.nodes.x, cuts);
   return g;

@@ -26,9 +26,9 @@
 namespace peridem {
 
 struct GrainOptions {
-  LatticeOptions lattice;          // offset and nodal volume rule
-  Pruning pruning = Pruning::Seed; // Bhattacharya & Lipton 2023, §5 by default
-  std::vector<CutSegment> cuts;    // pre-notches / cracks (grain frame)
+  LatticeOptions lattice;                      // offset and nodal volume rule
+  Pruning pruning = Pruning::ExtendedBoundary; // Bhattacharya & Lipton 2023, §5 by default
+  std::vector<CutSegment> cuts;                // pre-notches / cracks (grain frame)
 };
 
 struct Grain2D {
@@ -56,7 +56,8 @@ Grain2D mesh_grain(const Mesh2D &mesh, double eps, const Polygon *shape = nullpt
                    const std::vector<CutSegment> &cuts = {});
 // 3D lattice grain.
 Grain3D discretize_grain_3d(const Shape3D &shape, double h, double eps,
-                            Pruning pruning = Pruning::Seed, const Vec3 &offset = Vec3());
+                            Pruning pruning = Pruning::ExtendedBoundary,
+                            const Vec3 &offset = Vec3());
 
 } // namespace peridem
 

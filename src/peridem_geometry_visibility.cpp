@@ -82,7 +82,7 @@ double local_feature_size(const Polygon &D)
   return lfs;
 }
 
-SeedPruner::SeedPruner(const Polygon &D, double delta)
+ExtendedBoundaryPruner::ExtendedBoundaryPruner(const Polygon &D, double delta)
 {
   delta_ = delta > 0.0 ? delta : 0.01 * local_feature_size(D);
   const double far_length = D.max_radius();
@@ -148,7 +148,7 @@ SeedPruner::SeedPruner(const Polygon &D, double delta)
   for (const auto &s : cusps_) cuspBox_.push_back(box(s));
 }
 
-bool SeedPruner::keeps(const Vec2 &x, const Vec2 &y) const
+bool ExtendedBoundaryPruner::keeps(const Vec2 &x, const Vec2 &y) const
 {
   if (convex()) return true; // Bhattacharya & Lipton 2023, §5: C_x is empty for convex D
   const double x0 = std::min(x.x, y.x), x1 = std::max(x.x, y.x);

@@ -15,7 +15,8 @@
 //  * segment_inside_exact(): the reference answer, a purely combinatorial test
 //    with exact orientation predicates (closed set: boundary counts as inside,
 //    so bonds along an edge or through a reflex corner are kept).
-//  * SeedPruner: the method of Bhattacharya & Lipton 2023, §5, built from the extended boundary
+//  * ExtendedBoundaryPruner: the method of Bhattacharya & Lipton 2023, §5, built from the extended
+//  boundary
 //    (vertices pushed out by delta along the outer angle bisectors) and the
 //    bisectors of the nonconvex cusps; a bond is a non-bond iff it meets them.
 // The unit tests show both give the same bond set on every built-in shape.
@@ -34,7 +35,7 @@ namespace peridem {
 bool segment_inside_exact(const Polygon &shape, const Vec2 &p, const Vec2 &q);
 
 // Bhattacharya & Lipton 2023, §5 non-bond detector for one (fixed) polygon.
-class SeedPruner {
+class ExtendedBoundaryPruner {
  public:
   struct Segment {
     Vec2 a, b;
@@ -42,7 +43,7 @@ class SeedPruner {
   // delta: offset of the extended boundary; <= 0 selects the default
   // 0.01 * (local feature size: the shortest edge or vertex-to-edge gap), which
   // keeps the extended boundary strictly outside D.
-  explicit SeedPruner(const Polygon &shape, double delta = -1.0);
+  explicit ExtendedBoundaryPruner(const Polygon &shape, double delta = -1.0);
 
   // True if the bond x-y (x, y nodes of the shape) is kept, i.e. it meets
   // neither an extended boundary edge nor an open cusp bisector.

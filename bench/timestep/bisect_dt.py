@@ -17,13 +17,13 @@ outside [0, 1.05].  It starts at `--start` (0.5) x the critical estimate, multip
 `--grow` (2) until the run is unstable, then halves the bracket `--steps` times.  Prints one table row per case.
 
 Cases (at the papers' parameters):
-  bed4, bed5  the grain-shape paper's Sec. 7.3 bed (examples/bed-settling/in.bed, reduced to
+  bed4, bed5  Bhattacharya & Lipton's (2023) Sec. 7.3 bed (examples/bed-settling/in.bed, reduced to
               4 grains of radius 0.2-0.25 mm) with K_n eps^4 (2D default) and eps^5, run for
               0.6 ms of physical time (fall, impacts and bounces)
   bed4lps     bed4 with state-based grains (bond_style peridem/lps, M2's K and E)
   bed24, bed24e5  the whole 24-grain bed of examples/bed-settling (radii 0.4-0.7 mm), eps^4
               and eps^5 (use --time 1.5e-3: the upper rows land after 1 ms)
-  rest5, rest4  the PeriDEM paper's two-particle drop (examples/restitution/in.restitution,
+  rest5, rest4  Jha et al.'s (2021) two-particle drop (examples/restitution/in.restitution,
               damping centroid 0.8 100) with eps^5 (its Table 2) and eps^4
 
 usage: bisect_dt.py [--lmp build/lmp_peridem] [--cases bed4,bed5,rest5,rest4] [--steps 5]

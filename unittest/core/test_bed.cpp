@@ -7,8 +7,8 @@
    SPDX-License-Identifier: GPL-2.0-only
 ------------------------------------------------------------------------- */
 
-// Bed measures: the hole of a ring lattice (the area the grain-shape
-// paper's ring volume fraction 0.92 counts, §7.3) and the median surface.
+// Bed measures: the hole of a ring lattice (the area the ring volume
+// fraction 0.92 of Bhattacharya & Lipton 2023, §7.3 counts) and the median surface.
 
 #include "peridem_bed.h"
 

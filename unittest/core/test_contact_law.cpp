@@ -98,7 +98,7 @@ TEST(ContactLaw, StiffnessForm2dPerUnitThickness)
   // thickness (N/m) only if K_n is in Pa/m^4; the eps^5 form is exactly 1/eps times stiffer.
   EXPECT_EQ(default_kn_form(2), KnForm::Eps4);
   EXPECT_EQ(default_kn_form(3), KnForm::Eps5);
-  const double k = 2.0e9, eps = 0.5e-3; // M2 of the grain-shape paper, its Sec. 7.3 horizon
+  const double k = 2.0e9, eps = 0.5e-3; // M2 of Bhattacharya & Lipton (2023), its Sec. 7.3 horizon
   EXPECT_NEAR(contact_stiffness(k, eps, KnForm::Eps4) / (18.0 * k / (M_PI * std::pow(eps, 4))), 1.0,
               1e-14);
   EXPECT_NEAR(contact_stiffness(k, eps, KnForm::Eps5) / contact_stiffness(k, eps, KnForm::Eps4),
@@ -470,7 +470,7 @@ TEST(ContactLaw, StableTimeStep)
   EXPECT_NEAR(t.dt_contact, std::sqrt(2.0 * 1.2e-5 / (1.5 * 1e20 * 1e-16)), 1e-20);
   c.walls = false;
   EXPECT_DOUBLE_EQ(stable_time_step(c).n_contacts, 1.5);
-  // the grain-shape paper's R_c = 1.6 h: ball 2 ceil(8.04)/2 = 9 k/m, shallow 4 k/m (2 nodes
+  // Bhattacharya & Lipton's (2023) R_c = 1.6 h: ball 2 ceil(8.04)/2 = 9 k/m, shallow 4 k/m (2 nodes
   // of a surface row until delta_s = (1.6 - sqrt(1.56)) h = 0.351 h), the wall at that depth
   // 2 sqrt(Rc^2 - d^2)(Rc - d)/h^2 = 2 x 1 x 0.351 = 0.70 k/m: n = 2
   c.Rc = 1.6e-4;

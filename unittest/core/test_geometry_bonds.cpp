@@ -45,7 +45,7 @@ TEST(GeometryBonds, CellListEqualsBruteForce)
       for (const Bond &p : b) EXPECT_LT(p.first, p.second);
       // Convex square: no pruning, and the interior node degree matches the
       // lattice count of points with |(i, j)| <= m (m = 3: 28, m = 4: 48).
-      EXPECT_EQ(create_bonds(sq, n.x, m * h, Pruning::Seed), b);
+      EXPECT_EQ(create_bonds(sq, n.x, m * h, Pruning::ExtendedBoundary), b);
     }
   }
   const Nodes2D n = lattice_nodes(sq, 0.1);
@@ -198,10 +198,10 @@ TEST(GeometryBonds, Shapes3D)
   const double h = 0.1;
   const Nodes3D n = lattice_nodes_3d(plus, h);
   const auto all = create_bonds_3d(plus, n.x, 3 * h, Pruning::None);
-  const auto seed = create_bonds_3d(plus, n.x, 3 * h, Pruning::Seed);
+  const auto extended = create_bonds_3d(plus, n.x, 3 * h, Pruning::ExtendedBoundary);
   const auto exact = create_bonds_3d(plus, n.x, 3 * h, Pruning::Exact);
-  EXPECT_EQ(seed, exact);
-  EXPECT_LT(seed.size(), all.size());
+  EXPECT_EQ(extended, exact);
+  EXPECT_LT(extended.size(), all.size());
   std::size_t brute = 0;
   for (std::size_t i = 0; i < n.size(); ++i)
     for (std::size_t j = i + 1; j < n.size(); ++j)

@@ -43,21 +43,21 @@ Agreement compare(const Polygon &D, double h, double eps, const Vec2 &offset)
   LatticeOptions lo;
   lo.offset = offset;
   const Nodes2D n = lattice_nodes(D, h, lo);
-  const SeedPruner seed(D);
+  const ExtendedBoundaryPruner pruner(D);
   Agreement a;
   for (const Vec2 &p : n.x) EXPECT_TRUE(D.contains_exact(p));
   for (const Bond &b : pairs_within_horizon(n.x, eps)) {
     const Vec2 &p = n.x[b.first], &q = n.x[b.second];
     const bool exact = segment_inside_exact(D, p, q);
-    const bool viaSeed = seed.keeps(p, q);
+    const bool viaPruner = pruner.keeps(p, q);
     ++a.candidates;
     exact ? ++a.kept : ++a.removed;
     if (D.locate(p) == 0 || D.locate(q) == 0) ++a.onBoundary;
-    if (exact != viaSeed) {
+    if (exact != viaPruner) {
       if (a.mismatches++ == 0) {
         char buf[200];
-        std::snprintf(buf, sizeof(buf), "(%.17g,%.17g)-(%.17g,%.17g) exact=%d seed=%d", p.x, p.y,
-                      q.x, q.y, exact, viaSeed);
+        std::snprintf(buf, sizeof(buf), "(%.17g,%.17g)-(%.17g,%.17g) exact=%d extended=%d", p.x,
+                      p.y, q.x, q.y, exact, viaPruner);
         a.firstMismatch = buf;
       }
     }
@@ -85,8 +85,8 @@ TEST(GeometryVisibility, ExactTestKnownCases)
   const Polygon ring = make_ring(1.0, 0.5, 32);
   EXPECT_FALSE(segment_inside_exact(ring, {-0.75, 0}, {0.75, 0}));
   EXPECT_TRUE(segment_inside_exact(ring, {-0.3, 0.8}, {0.3, 0.8}));
-  // The seed pruner agrees on these.
-  const SeedPruner s(L);
+  // The extended-boundary pruner agrees on these.
+  const ExtendedBoundaryPruner s(L);
   EXPECT_TRUE(s.keeps({0.5, 1.5}, {1.5, 0.5}));
   EXPECT_FALSE(s.keeps({0.5, 0.5}, {1.5, 1.5}));
   EXPECT_FALSE(s.keeps({1.5, 0.9}, {0.9, 1.5}));
@@ -96,7 +96,7 @@ TEST(GeometryVisibility, ExactTestKnownCases)
   EXPECT_EQ(s.extended_boundary().size(), 6u);
 }
 
-TEST(GeometryVisibility, SeedPruningEqualsExactOnEveryBuiltinShape)
+TEST(GeometryVisibility, ExtendedBoundaryPruningEqualsExactOnEveryBuiltinShape)
 {
   std::vector<std::pair<std::string, Polygon>> shapes;
   for (const auto &name : builtin_shape_names()) shapes.emplace_back(name, make_shape(name));
@@ -153,7 +153,7 @@ TEST(GeometryVisibility, GapsAreCutConvexShapesAreNot)
     const double h = c.R / 20;
     const Nodes2D n = lattice_nodes(D, h);
     const auto all = pairs_within_horizon(n.x, 4 * h);
-    const auto kept = create_bonds(D, n.x, 4 * h, Pruning::Seed);
+    const auto kept = create_bonds(D, n.x, 4 * h, Pruning::ExtendedBoundary);
     const auto keptExact = create_bonds(D, n.x, 4 * h, Pruning::Exact);
     EXPECT_EQ(kept, keptExact) << c.name;
     if (c.expectCut)

@@ -298,8 +298,8 @@ TEST(Material, BadFilesGiveClearErrors)
   }
 }
 
-// Files named after their paper and table: the grain-shape paper's Table 2 and the
-// PeriDEM paper's Table 1, each with its M1 and M2; the old one-material files agree.
+// Files named after their paper and table: Bhattacharya & Lipton's (2023) Table 2 and the
+// Table 1 of Jha et al. (2021), each with its M1 and M2; the old one-material files agree.
 TEST(Material, ReadsPaperTableFiles)
 {
   const auto gs = read_material_file(potential("grain_shape_2023_table2.peridem"));

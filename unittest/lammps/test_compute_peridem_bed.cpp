@@ -75,7 +75,7 @@ TEST_F(ComputePeridemBed, HeightAndVolumeFractionOfSquares)
 
 TEST_F(ComputePeridemBed, RingVolumeWithHoleIsTheOuterDisk)
 {
-  // ring R = 1, r = 0.5 (h = 0.025): the grain-shape paper's ring volume
+  // ring R = 1, r = 0.5 (h = 0.025): Bhattacharya & Lipton's (2023) ring volume
   // fraction (0.92) counts the hole; the node volumes do not
   command("create_peridem_grains 1 ring radius 1 inner_radius 0.5 spacing 0.025 horizon 0.075 "
           "density 1 at 3 1.2 0 rotate 17\n"

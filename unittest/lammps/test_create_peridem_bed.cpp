@@ -8,8 +8,8 @@
 ------------------------------------------------------------------------- */
 
 // create_peridem_bed: grains placed from a jammed bed file are at
-// least R_c apart from each other and from the walls at step 0 (grain-shape
-// Bhattacharya & Lipton 2023, §7.1 step 5), each fills its security disk (diameter matched), the
+// least R_c apart from each other and from the walls at step 0
+// (Bhattacharya & Lipton 2023, §7.1 step 5), each fills its security disk (diameter matched), the
 // labels pick the lines of each create_peridem_grains, and the bed file
 // reads back the disks it wrote. 1 vs 2 ranks: unittest/lammps/inputs/bed.cmake.
 

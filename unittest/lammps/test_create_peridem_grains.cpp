@@ -26,6 +26,7 @@
 #include <array>
 #include <set>
 #include <string>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -153,6 +154,38 @@ TEST_F(CreatePeridemGrainsTest, NoBondLeavesNonconvexShapes)
   }
 }
 
+// pruning extended (the default), its first name seed, exact and off on the same plus grain:
+// the first four give the bonds of the exact segment-in-shape test, off keeps bonds that leave
+// the grain (across the gap between two arms)
+TEST_F(CreatePeridemGrainsTest, PruningKeywordNamesAndAlias)
+{
+  command(box2d);
+  const std::string plus = "create_peridem_grains 1 plus radius 1 arm_width 0.5 spacing 0.08 "
+                           "horizon 0.24 density 1 at ";
+  const std::vector<std::string> modes = {"", "pruning extended", "pruning seed", "pruning exact",
+                                          "pruning off"};
+  const peridem::Polygon shape = peridem::make_shape("plus", {{"radius", 1}, {"arm_width", 0.5}});
+  const auto nodes = peridem::lattice_nodes(shape, 0.08);
+  std::vector<std::set<TagBond>> bonds; // per mode, in node indices of the grain
+  for (std::size_t m = 0; m < modes.size(); m++) {
+    const tagint tag0 = 1 + static_cast<tagint>(m * nodes.size());
+    command(plus + std::to_string(-3.0 + 1.5 * m) + " 0 0 " + modes[m]);
+    ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>((m + 1) * nodes.size())) << modes[m];
+    std::set<TagBond> mine;
+    for (const auto &b : bond_set(lmp))
+      if (b.first >= tag0) mine.emplace(b.first - tag0, b.second - tag0);
+    bonds.push_back(mine);
+  }
+  std::size_t outside = 0;
+  for (const auto &b : bonds[4]) {
+    const bool inside = peridem::segment_inside_exact(shape, nodes.x[b.first], nodes.x[b.second]);
+    EXPECT_EQ(bonds[3].count(b) == 1, inside) << b.first << "-" << b.second;
+    if (!inside) outside++;
+  }
+  EXPECT_GT(outside, 0u); // the plus is nonconvex at this horizon
+  for (int m = 0; m < 3; m++) EXPECT_EQ(bonds[m], bonds[3]) << modes[m];
+}
+
 TEST_F(CreatePeridemGrainsTest, NotchKeywordAndCutCommandRemoveCrossingBonds)
 {
   command(box2d);
@@ -221,8 +254,8 @@ TEST_F(CreatePeridemGrainsTest, SolidAndExtrudedGrainsEqualCoreLibrary)
 {
   command(grain_box("lj", 3, "-3 3 -3 3 -3 3", 40));
   command("create_peridem_grains 1 sphere radius 1 spacing 0.2 horizon 0.4 density 1 at -1.5 0 0");
-  const auto sphere =
-      peridem::discretize_grain_3d(peridem::Shape3D::sphere(1.0), 0.2, 0.4, peridem::Pruning::Seed);
+  const auto sphere = peridem::discretize_grain_3d(peridem::Shape3D::sphere(1.0), 0.2, 0.4,
+                                                   peridem::Pruning::ExtendedBoundary);
   ASSERT_EQ(lmp->atom->natoms, static_cast<bigint>(sphere.nodes.size()));
   EXPECT_EQ(bond_set(lmp), core_bonds(sphere.bonds, 1));
   EXPECT_NEAR(sum_volume(lmp), sphere.nodes.size() * 0.008, 1e-12);
@@ -230,7 +263,7 @@ TEST_F(CreatePeridemGrainsTest, SolidAndExtrudedGrainsEqualCoreLibrary)
   command("create_peridem_grains 1 plus extrude 0.6 spacing 0.1 horizon 0.2 density 1 at 1.5 0 0");
   const auto plus = peridem::discretize_grain_3d(
       peridem::Shape3D::extrusion(peridem::make_shape("plus", {}), 0.6), 0.1, 0.2,
-      peridem::Pruning::Seed);
+      peridem::Pruning::ExtendedBoundary);
   std::set<TagBond> mine;
   const tagint tag0 = sphere.nodes.size() + 1;
   for (const auto &b : bond_set(lmp))

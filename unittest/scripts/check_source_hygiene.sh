@@ -28,7 +28,7 @@ report "M_PI (use MathConst::MY_PI or peridem::kPi)" "$(grep -nw 'M_PI' -- *.cpp
 report "compiler builtins" "$(grep -n '__builtin_' -- *.cpp *.h)"
 report "LAMMPS_VERSION_NUMBER is not a LAMMPS macro" "$(grep -n 'LAMMPS_VERSION_NUMBER' -- *.cpp *.h)"
 report "project shorthand instead of an author-year citation" \
-  "$(grep -nE '\[BL\]|\[JDBL\]|\bseed (§|Sec\.|eq\.|Table)|\bseed'"'"'s\b|grain-shape seed|PeriDEM seed|\bissue [0-9]+|shared/seeds|in the seed\b|[Tt]he seed \(' -- *.cpp *.h)"
+  "$(grep -nE '\[BL\]|\[JDBL\]|\bseed (§|Sec\.|eq\.|Table)|\bseed'"'"'s\b|grain-shape seed|PeriDEM seed|\bissue [0-9]+|shared/seeds|in the seed\b|[Tt]he seed \(|grain-shape paper|PeriDEM paper' -- *.cpp *.h)"
 for f in peridem_*.cpp peridem_*.h; do
   for inc in $(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$f"); do
     case "$inc" in

@@ -137,7 +137,7 @@ peridem_catalogue_error(grains_value_missing "Illegal create_peridem_grains comm
   -var bad "create_peridem_grains 1 sphere radius 1e-3 spacing")
 peridem_catalogue_error(grains_rotate_seed_zero "create_peridem_grains: rotate random seed must be > 0"
   -var bad "${_sphere} rotate random 0")
-peridem_catalogue_error(grains_pruning_unknown "create_peridem_grains: unknown pruning 'maybe' \\(use seed, exact or off\\)"
+peridem_catalogue_error(grains_pruning_unknown "create_peridem_grains: unknown pruning 'maybe' \\(use extended, exact or off\\)"
   -var bad "${_sphere} pruning maybe")
 peridem_catalogue_error(grains_radii_and_at "create_peridem_grains: a positions file with radii cannot be mixed with at or other positions"
   -var bad "${_sphere} positions ${_cat}/pos_radii.txt")

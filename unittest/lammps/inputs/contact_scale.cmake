@@ -7,7 +7,7 @@
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
 # contact at the papers' scale: the K_n form of the dimension,
-# start-up checks, the grain-shape paper's bed at its time step
+# start-up checks, Bhattacharya & Lipton's (2023) bed at its time step
 
 # Kn_form: bad values and a form that makes no sense for the dimension
 set(_cs ${_in}/contact_scale_error.in)
@@ -27,7 +27,7 @@ peridem_add_error_test(kn_form_unknown_wall ${_cs}
   -var wall "ylo 0.0 Kn 1 Rc 0.5 Kn_form 4")
 
 # the log states K_n and its form: 2D default eps4, 3D eps5, eps5 on request in 2D;
-# K_n = 18 k/(pi eps^p) from a material (grain-shape paper's M2, k = 2 GPa, eps = 0.5 mm):
+# K_n = 18 k/(pi eps^p) from a material (M2 of Bhattacharya & Lipton 2023, k = 2 GPa, eps = 0.5 mm):
 # 18 2e9/(pi 0.5e-3^4) = 1.8335e+23, 18 2e9/(pi 0.5e-3^5) = 3.6669e+26
 set(_gs "material ${PROJECT_SOURCE_DIR}/potentials/grain_shape_2023_table2.peridem M2")
 foreach(_case "2;;1.833464944418[0-9]*e\\+23 \\(Kn_form eps4: 18 k/\\(pi eps\\^4\\), 2d per unit thickness"
@@ -63,7 +63,7 @@ set_tests_properties(contact_startup_skin_overflow_warns PROPERTIES
   PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: the neighbour list reaches 10.3 \\(cutoff 0.3 \\+ neighbor skin 10\\).*more than neigh_modify one 2000.*ERROR.*Neighbor list overflow"
   TIMEOUT 60)
 
-# the grain-shape paper's bed (Sec. 7.3: M2, eps = 0.5 mm, h = eps/8, R_c = eps/5, mu = 0.8,
+# Bhattacharya & Lipton's (2023) bed (Sec. 7.3: M2, eps = 0.5 mm, h = eps/8, R_c = eps/5, mu = 0.8,
 # r_d = 0.8, g = 5000 m/s^2) at its time step 70 ns, reduced to 4 grains of radius
 # 0.2-0.25 mm (the 24-grain bed is examples/bed-settling): with the 2D form it settles (kinetic
 # energy 100x below its peak, no node faster than 3x free fall), with eps5 it blows up and the
@@ -94,7 +94,7 @@ set_tests_properties(bed_gs_70ns_eps5_warns PROPERTIES
   PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: time step 7e-08 exceeds the recommended"
   TIMEOUT 120)
 
-# the time-step estimate against the measured stability threshold on the PeriDEM paper's
+# the time-step estimate against the measured stability threshold on Jha et al.'s (2021)
 # two-particle drop (h = 0.1423 mm, damping centroid 0.8 100), with K_n eps^5 (its Table 2)
 # and eps^4: stable at the critical estimate, unstable at twice it (bisected thresholds
 # 1.4x and 1.3x the estimate, doc/pair_peridem_contact.rst)
@@ -105,7 +105,7 @@ set_tests_properties(timestep_estimate_vs_threshold_drop PROPERTIES
   PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|Traceback"
   TIMEOUT 300)
 
-# the estimate against thresholds the test measures itself, on the grain-shape paper's small
+# the estimate against thresholds the test measures itself, on Bhattacharya & Lipton's (2023) small
 # bed (walls, damping 0.8, friction 0.8): eps5 (contact-limited: node pairs and walls), eps4
 # (bond-limited) and state-based grains (bond_style peridem/lps, the LPS spring bound): each
 # run stable at the critical estimate and unstable at twice it, i.e. estimate < threshold <

@@ -6,7 +6,7 @@
 # version 2; see the LICENSE file in the top-level PERIDEM directory.
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
-# The grain-shape paper's fracture experiments as examples:
+# Bhattacharya & Lipton's (2023) fracture experiments as examples:
 # examples/notch-fracture (§6.4), examples/kalthoff-winkler (§6.2),
 # examples/plus-collision (§6.3).
 
@@ -37,7 +37,7 @@ set_tests_properties(notch_fracture_trend PROPERTIES TIMEOUT 300)
 
 # examples/kalthoff-winkler at the issue's resolution (h = 1 mm, eps = 3 mm,
 # 110 us, about 5 s of CPU): the crack leaves the notch tip at the experiment's
-# angle, 68 +- 5 degrees over its first 20 mm (grain-shape paper §6.2: ~68;
+# angle, 68 +- 5 degrees over its first 20 mm (Bhattacharya & Lipton 2023, §6.2: ~68;
 # this package: 67.9)
 add_test(NAME kalthoff_winkler_angle
   COMMAND ${PERIDEM_RUN}/expect_pass.sh /usr/bin/python3 ${PROJECT_SOURCE_DIR}/examples/kalthoff-winkler/crack_angle.py
