@@ -152,18 +152,17 @@ void ComputePeridemDamage::count_bonds()
       if (j < 0)
         error->one(FLERR, "{}: atom {} bonded to atom {} is missing on proc {}", STYLE, partner,
                    tag[i], comm->me);
-      double du[3];
-      for (int d = 0; d < 3; d++) du[d] = (x[j][d] - x[i][d]) - (x0[j][d] - x0[i][d]);
+      double dy[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       double xi[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
-      peridem_lmp::minimum_image(domain, du[0], du[1], du[2]);
+      peridem_lmp::minimum_image(domain, dy[0], dy[1], dy[2]);
       peridem_lmp::minimum_image(domain, xi[0], xi[1], xi[2]);
       const double r0 = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
       double z;
       if (z_displacement) {
+        const double du[3] = {dy[0] - xi[0], dy[1] - xi[1], dy[2] - xi[2]};
         z = peridem::z_displacement_term(std::sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]),
                                          r0, s0[type]);
       } else {
-        double dy[3] = {xi[0] + du[0], xi[1] + du[1], xi[2] + du[2]};
         z = peridem::z_stretch_term(
             peridem::stretch(std::sqrt(dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]), r0),
             s0[type]);
