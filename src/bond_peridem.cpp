@@ -80,10 +80,17 @@ BondPeridem::~BondPeridem()
 
 double BondPeridem::reference_length(int i1, int i2) const
 {
-  double **x0 = atom->x0;
-  double dx = x0[i1][0] - x0[i2][0];
-  double dy = x0[i1][1] - x0[i2][1];
-  double dz = x0[i1][2] - x0[i2][2];
+  return reference_length_flat(atom->x0[0], i1, i2);
+}
+
+// x0 flat from x0[0] (LAMMPS's per-atom arrays are contiguous, memory->grow), so that
+// fill_cache() reads it without a row pointer per atom
+inline double BondPeridem::reference_length_flat(const double *x0, int i1, int i2) const
+{
+  const double *a = x0 + 3 * i1, *b = x0 + 3 * i2;
+  double dx = a[0] - b[0];
+  double dy = a[1] - b[1];
+  double dz = a[2] - b[2];
   peridem_lmp::minimum_image(domain, dx, dy, dz);
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
@@ -123,16 +130,12 @@ void BondPeridem::compute(int eflag, int vflag)
    the bit (tested: chunked_equals_one_by_one).
 ------------------------------------------------------------------------- */
 
-// built three times, for AVX-512, AVX2 and the baseline x86-64 (SSE2), chosen when the
-// library loads: pass (b) then takes eight or four bonds per instruction. Without FMA
-// contraction (-ffp-contract=off, cmake/PeridemLAMMPS.cmake), so each result is the same
-// IEEE operation as in compute_one_by_one(), to the bit. in.peri_impact, CPU time of the Bond
-// section, median of 6 interleaved runs: 5.0 (SSE2), 4.0-4.3 (AVX2), 3.6-4.4 ns per bond
-// (AVX-512)
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-__attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
-void BondPeridem::compute_chunked()
+// one chunked pass over the bond list; DIM 2 leaves z out: in 2d every node lies in one
+// plane (LAMMPS's 2d model), so z1 - z2 = 0 and |y|, the stretch and the force are the same
+// IEEE results without it (to the bit: tested, chunked_equals_one_by_one, 2d), and f_z gets
+// nothing. The 2d bed then gathers, sums and scatters two components instead of three.
+template <int DIM, bool UNIFORM_K>
+inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
 {
   constexpr int CHUNK = 64;
   const int nbondlist = neighbor->nbondlist;
@@ -145,6 +148,7 @@ void BondPeridem::compute_chunked()
   const int newton_bond = force->newton_bond;
   const double *inv_r0 = cache.inv_r0.data();
   const double *kb = cache.k.data();
+  const double k_all = cache.k_value;
 
   alignas(64) double dx[CHUNK], dy[CHUNK], dz[CHUNK], rv[CHUNK], sv[CHUNK], fb[CHUNK];
   int current = -1;
@@ -158,16 +162,18 @@ void BondPeridem::compute_chunked()
       const double *x1 = x + 3 * b[3 * j], *x2 = x + 3 * b[3 * j + 1];
       dx[j] = x1[0] - x2[0];
       dy[j] = x1[1] - x2[1];
-      dz[j] = x1[2] - x2[2];
+      if (DIM == 3) dz[j] = x1[2] - x2[2];
     }
     // (b) no branches: vectorised. An entry with r = 0 (coinciding nodes)
     // gets an infinite or undefined fb here, and no force in (c)
-    const double *ir = inv_r0 + n0, *kk = kb + n0;
+    const double *ir = inv_r0 + n0, *kk = UNIFORM_K ? nullptr : kb + n0;
     for (int j = 0; j < m; j++) {
-      const double r = std::sqrt(dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j]);
+      const double rsq =
+          DIM == 3 ? dx[j] * dx[j] + dy[j] * dy[j] + dz[j] * dz[j] : dx[j] * dx[j] + dy[j] * dy[j];
+      const double r = std::sqrt(rsq);
       rv[j] = r;
       sv[j] = peridem::stretch_from_inverse(r, ir[j]);
-      fb[j] = -peridem::bond_force_per_length(kk[j], ir[j], 1.0 / r);
+      fb[j] = -peridem::bond_force_per_length(UNIFORM_K ? k_all : kk[j], ir[j], 1.0 / r);
     }
     // (c) forces in list order
     for (int j = 0; j < m; j++) {
@@ -179,11 +185,33 @@ void BondPeridem::compute_chunked()
         continue;
       }
       const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
-      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
-                                  dy[j], dz[j], fbond);
+      if (DIM == 3)
+        peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
+                                    dy[j], dz[j], fbond);
+      else
+        peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
+                                       dy[j], fbond);
     }
   }
   if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+}
+
+// built three times, for AVX-512, AVX2 and the baseline x86-64 (SSE2), chosen when the
+// library loads: pass (b) then takes eight or four bonds per instruction. Without FMA
+// contraction (-ffp-contract=off, cmake/PeridemLAMMPS.cmake), so each result is the same
+// IEEE operation as in compute_one_by_one(), to the bit. in.peri_impact, CPU time of the Bond
+// section, median of 6 interleaved runs: 5.0 (SSE2), 4.0-4.3 (AVX2), 3.6-4.4 ns per bond
+// (AVX-512)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+void BondPeridem::compute_chunked()
+{
+  const bool planar = domain->dimension == 2;
+  if (cache.k_uniform)
+    planar ? chunked_pass<2, true>() : chunked_pass<3, true>();
+  else
+    planar ? chunked_pass<2, false>() : chunked_pass<3, false>();
 }
 
 /* ----------------------------------------------------------------------
@@ -199,6 +227,7 @@ void BondPeridem::compute_one_by_one(int eflag)
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   const double *r0c = cache.r0.data(), *inv_r0 = cache.inv_r0.data(), *kb = cache.k.data();
+  const bool k_uniform = cache.k_uniform;
   double ebond = 0.0;
 
   // forces on i1 summed in registers (lmp_peridem_bond_loop.h)
@@ -230,12 +259,13 @@ void BondPeridem::compute_one_by_one(int eflag)
     // F/|y| of bond_force(c, w, s, V_i, V_j), with c w V_i V_j (and the
     // volume factor) in k; a positive force pulls i1 towards i2, and
     // LAMMPS's fbond multiplies x1 - x2
-    const double fbond = r > 0.0 ? -peridem::bond_force_per_length(kb[n], inv_r0[n], 1.0 / r) : 0.0;
+    const double k = k_uniform ? cache.k_value : kb[n];
+    const double fbond = r > 0.0 ? -peridem::bond_force_per_length(k, inv_r0[n], 1.0 / r) : 0.0;
 
     peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
                                 delz, fbond);
 
-    if (eflag) ebond = peridem::bond_energy(kb[n], 1.0, s, r0, 1.0, 1.0);
+    if (eflag) ebond = peridem::bond_energy(k, 1.0, s, r0, 1.0, 1.0);
     if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
     if (breaks) break_bond(n, i1, i2, r0, s0[type]);
   }
@@ -250,6 +280,11 @@ void BondPeridem::compute_one_by_one(int eflag)
 
 double BondPeridem::bond_stiffness(int type, double r0, int i1, int i2) const
 {
+  return stiffness(type, r0, atom->vfrac[i1], atom->vfrac[i2]);
+}
+
+inline double BondPeridem::stiffness(int type, double r0, double vol1, double vol2) const
+{
   const double w = peridem::micromodulus_value(conic[type] ? peridem::Micromodulus::Conic
                                                            : peridem::Micromodulus::Constant,
                                                r0, horizon[type]);
@@ -257,23 +292,54 @@ double BondPeridem::bond_stiffness(int type, double r0, int i1, int i2) const
                             ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM, r0,
                                                      horizon[type], spacing[type])
                             : 1.0;
-  return peridem::bond_force(c[type], w, 1.0, atom->vfrac[i1], atom->vfrac[i2] * vscale);
+  return peridem::bond_force(c[type], w, 1.0, vol1, vol2 * vscale);
 }
 
 void BondPeridem::fill_cache()
 {
+  // once per rebuild of the bond list (41 times in in.peri_impact's 1000 steps): a tight
+  // loop over flat arrays, 4.5 % of that run's samples before (session 7)
+  const int *bl = neighbor->bondlist[0];
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
+  const double *x0 = atom->x0[0];
+  const double *vfrac = atom->vfrac;
   cache.r0.assign(nbondlist, 0.0);
   cache.inv_r0.assign(nbondlist, 0.0);
-  cache.k.assign(nbondlist, 0.0);
+  double *r0c = cache.r0.data(), *inv_r0 = cache.inv_r0.data();
+  // k is often one value for the whole list (one material, equal node volumes, constant
+  // micromodulus, no volume correction: the beds): then the force loop reads that value
+  // instead of streaming 8 bytes per bond (28 -> 20 bytes per bond with the bond list and
+  // 1/r0); the same double, so the same forces to the bit
+  int mismatch = -1;
+  bool found = false;
+  cache.k_value = 0.0;
   for (int n = 0; n < nbondlist; n++) {
-    const int type = bondlist[n][2];
+    const int *b = bl + 3 * n;
+    const int type = b[2];
     if (type <= 0) continue;
-    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-    cache.r0[n] = reference_length(i1, i2);
-    cache.inv_r0[n] = 1.0 / cache.r0[n];
-    cache.k[n] = bond_stiffness(type, cache.r0[n], i1, i2);
+    const int i1 = b[0], i2 = b[1];
+    const double r0 = reference_length_flat(x0, i1, i2);
+    r0c[n] = r0;
+    inv_r0[n] = 1.0 / r0;
+    if (mismatch >= 0) continue;
+    const double k = stiffness(type, r0, vfrac[i1], vfrac[i2]);
+    if (!found) {
+      found = true;
+      cache.k_value = k;
+    } else if (k != cache.k_value)
+      mismatch = n;
+  }
+  cache.k_uniform = mismatch < 0; // also with no intact bond at all (k_value 0)
+  if (cache.k_uniform) {
+    std::vector<double>().swap(cache.k);
+  } else {
+    cache.k.assign(nbondlist, 0.0);
+    double *k = cache.k.data();
+    for (int n = 0; n < nbondlist; n++) {
+      const int *b = bl + 3 * n;
+      if (b[2] > 0) k[n] = stiffness(b[2], r0c[n], vfrac[b[0]], vfrac[b[1]]);
+    }
   }
   cache_ncalls = neighbor->ncalls;
   cache_bondlist = bondlist;

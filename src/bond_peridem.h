@@ -102,7 +102,9 @@ class BondPeridem : public Bond {
   struct BondCache {
     std::vector<double> r0;     // reference length |xi|
     std::vector<double> inv_r0; // 1/|xi|
-    std::vector<double> k;      // c w(|xi|) V_i V_j, times the volume factor
+    std::vector<double> k;      // c w(|xi|) V_i V_j, times the volume factor (if not uniform)
+    bool k_uniform = false;     // every intact bond of the list has k = k_value (k empty)
+    double k_value = 0.0;
     std::size_t size() const { return r0.size(); }
   };
   BondCache cache;
@@ -111,13 +113,16 @@ class BondPeridem : public Bond {
   void fill_cache();
   void compute_one_by_one(int eflag);
   void compute_chunked();
+  template <int DIM, bool UNIFORM_K> void chunked_pass();
   double bond_stiffness(int type, double r0, int i1, int i2) const;
+  double stiffness(int type, double r0, double vol1, double vol2) const;
 
   void allocate();
   void set_type(int type, const TypeParams &p);
   void validate_bonds();
   void break_bond(int n, int i1, int i2, double r0, double s0type);
   double reference_length(int i1, int i2) const;
+  double reference_length_flat(const double *x0, int i1, int i2) const;
 };
 
 } // namespace LAMMPS_NS

@@ -175,46 +175,16 @@ void BondPeridemLPS::compute(int eflag, int vflag)
   grow_lps();
   if (check_wvolume) compute_weighted_volume();
 
-  int **bondlist = neighbor->bondlist;
-  const int nbondlist = neighbor->nbondlist;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   const int newton_bond = force->newton_bond;
-  const double *x = atom->x[0];
-  double *f = atom->f[0];
-  const LpsCache *bc = lcache.data();
-  double *len = current_length.data();
 
-  // (1) dilation pass; the sum on i1 stays in a register while i1 repeats
+  // (1) dilation pass
   for (int i = 0; i < nall; i++) sum[i] = 0.0;
-  {
-    int current = -1;
-    double acc = 0.0;
-    for (int n = 0; n < nbondlist; n++) {
-      const int type = bondlist[n][2];
-      if (type <= 0) continue;
-      const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-      const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-      const double delx = x1[0] - x2[0], dely = x1[1] - x2[1], delz = x1[2] - x2[2];
-      const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
-      const double e = r - bc[n].r0;
-      // a bond that breaks now takes no part in this step (default order)
-      if (!break_after_force && break_flag &&
-          peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage)) {
-        break_bond(n, i1, i2, bc[n].r0, s0[type]);
-        continue;
-      }
-      len[n] = r;
-      if (i1 != current) {
-        if (current >= 0) sum[current] += acc;
-        current = i1;
-        acc = 0.0;
-      }
-      acc += bc[n].wi * e;
-      if (newton_bond || i2 < nlocal) sum[i2] += bc[n].wj * e;
-    }
-    if (current >= 0) sum[current] += acc;
-  }
+  if (domain->dimension == 2)
+    dilation_pass<2>();
+  else
+    dilation_pass<3>();
 
   // (2) theta_i = (d/m_i) sum (Jha et al. 2021, eq. 34), complete on owners and ghosts
   if (newton_bond) bonds_fix->reverse_sum(sum);
@@ -229,12 +199,131 @@ void BondPeridemLPS::compute(int eflag, int vflag)
   }
   bonds_fix->forward(theta_over_m, inv_m);
 
+  // (3) force pass: steps with energy or virial, and LAMMPS's break order, one bond at a time
+  // with z; the others without z in 2d (the same forces, to the bit)
+  if (evflag || (break_after_force && break_flag))
+    force_pass_one_by_one(eflag);
+  else if (domain->dimension == 2)
+    force_pass<2>();
+  else
+    force_pass<3>();
+}
+
+/* ----------------------------------------------------------------------
+   pass (1): extension e = |y| - r0 of each bond, breakage (unless
+   break_order after_force), sum omega beta r0 e V into both nodes, the sum on
+   i1 in a register while i1 repeats. DIM 2 leaves z out: 2d nodes lie in one
+   plane, so |y| is the same IEEE result without it. (Chunks with vectorised
+   square roots, as bond_style peridem's loop, made both LPS passes 30 %
+   slower on the 500-grain bed, session 7: not kept.)
+------------------------------------------------------------------------- */
+
+template <int DIM> void BondPeridemLPS::dilation_pass()
+{
+  const int *bl = neighbor->bondlist[0];
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  const double *x = atom->x[0];
+  const LpsCache *bc = lcache.data();
+  double *len = current_length.data();
+
+  int current = -1;
+  double acc = 0.0;
+  for (int n = 0; n < nbondlist; n++) {
+    const int *b = bl + 3 * n;
+    const int type = b[2];
+    if (type <= 0) continue;
+    const int i1 = b[0], i2 = b[1];
+    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+    const double delx = x1[0] - x2[0], dely = x1[1] - x2[1];
+    double rsq = delx * delx + dely * dely;
+    if (DIM == 3) {
+      const double delz = x1[2] - x2[2];
+      rsq += delz * delz;
+    }
+    const double r = std::sqrt(rsq);
+    const double e = r - bc[n].r0;
+    // a bond that breaks now takes no part in this step (default order)
+    if (!break_after_force && break_flag &&
+        peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage)) {
+      break_bond(n, i1, i2, bc[n].r0, s0[type]);
+      continue;
+    }
+    len[n] = r;
+    if (i1 != current) {
+      if (current >= 0) sum[current] += acc;
+      current = i1;
+      acc = 0.0;
+    }
+    acc += bc[n].wi * e;
+    if (newton_bond || i2 < nlocal) sum[i2] += bc[n].wj * e;
+  }
+  if (current >= 0) sum[current] += acc;
+}
+
+/* ----------------------------------------------------------------------
+   pass (3) of most steps (no energy or virial, default break order): the
+   force of each intact bond with the lengths of pass (1); DIM 2 leaves z out
+   (the same forces to the bit as force_pass_one_by_one(), which takes z:
+   tested, PlainForcePassEqualsOneByOne)
+------------------------------------------------------------------------- */
+
+template <int DIM> void BondPeridemLPS::force_pass()
+{
+  const int *bl = neighbor->bondlist[0];
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  const double *x = atom->x[0];
+  double *f = atom->f[0];
+  const LpsCache *bc = lcache.data();
+  const double *len = current_length.data();
+  const peridem::LpsConstants *lc = constants.data();
+
+  int current = -1;
+  double fsum[3] = {0.0, 0.0, 0.0};
+  for (int n = 0; n < nbondlist; n++) {
+    const int *b = bl + 3 * n;
+    const int type = b[2];
+    if (type <= 0) continue;
+    const int i1 = b[0], i2 = b[1];
+    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+    const double r = len[n];
+    const double F =
+        peridem::lps_bond_force(lc[type], bc[n].k, bc[n].r0, r - bc[n].r0, theta_over_m[i1],
+                                theta_over_m[i2], inv_m[i1], inv_m[i2]);
+    const double fbond = r > 0.0 ? -F / r : 0.0;
+    if (DIM == 3)
+      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
+                                  x1[0] - x2[0], x1[1] - x2[1], x1[2] - x2[2], fbond);
+    else
+      peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
+                                     x1[0] - x2[0], x1[1] - x2[1], fbond);
+  }
+  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+}
+
+/* ----------------------------------------------------------------------
+   pass (3) one bond at a time, with energy and virial and either break order
+------------------------------------------------------------------------- */
+
+void BondPeridemLPS::force_pass_one_by_one(int eflag)
+{
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nlocal = atom->nlocal;
+  const int newton_bond = force->newton_bond;
+  const double *x = atom->x[0];
+  double *f = atom->f[0];
+  const LpsCache *bc = lcache.data();
+  const double *len = current_length.data();
+
   // volumetric energy density needs theta on ghosts too: theta = (theta/m)/(1/m)
   auto theta_of = [&](int i) {
     return i < nlocal ? theta[i] : (inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0);
   };
 
-  // (3) force pass
   const peridem::LpsConstants *lc = constants.data();
   // forces on i1 summed in plain locals while i1 repeats (lmp_peridem_bond_loop.h)
   int current = -1;

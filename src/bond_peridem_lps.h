@@ -74,6 +74,12 @@ class BondPeridemLPS : public BondPeridem {
   void compute_weighted_volume();
 
   void allocate_lps();
+
+  // the passes of compute(): (1) the dilation sums, for 2d and 3d; (3) the forces, for 2d
+  // and 3d on most steps, one bond at a time with energy, virial or break_order after_force
+  template <int DIM> void dilation_pass();
+  template <int DIM> void force_pass();
+  void force_pass_one_by_one(int eflag);
 };
 
 } // namespace LAMMPS_NS

@@ -36,6 +36,16 @@ inline void add_force(double *f, int i, double a0, double a1, double a2)
   fi[2] += a2;
 }
 
+// the sums on i1 while i1 repeats: a new i1 stores the sums of the previous one (current)
+// and starts again from 0
+inline void start_atom(double *f, int &current, double *sum, int i1)
+{
+  if (i1 == current) return;
+  if (current >= 0) add_force(f, current, sum[0], sum[1], sum[2]);
+  current = i1;
+  sum[0] = sum[1] = sum[2] = 0.0;
+}
+
 // the force fbond (x1 - x2) of one bond on i1 and its opposite on i2 (when
 // to_i2): the forces on i1 are summed in sum[3], a local array of the
 // caller, while i1 repeats (current: the atom summed so far, -1 at first);
@@ -43,15 +53,25 @@ inline void add_force(double *f, int i, double a0, double a1, double a2)
 inline void add_bond_force(double *f, int &current, double *sum, int i1, int i2, bool to_i2,
                            double delx, double dely, double delz, double fbond)
 {
-  if (i1 != current) {
-    if (current >= 0) add_force(f, current, sum[0], sum[1], sum[2]);
-    current = i1;
-    sum[0] = sum[1] = sum[2] = 0.0;
-  }
+  start_atom(f, current, sum, i1);
   sum[0] += delx * fbond;
   sum[1] += dely * fbond;
   sum[2] += delz * fbond;
   if (to_i2) add_force(f, i2, -delx * fbond, -dely * fbond, -delz * fbond);
+}
+
+// the same in 2d: the bond has no z component, and f_z gets nothing
+inline void add_bond_force_2d(double *f, int &current, double *sum, int i1, int i2, bool to_i2,
+                              double delx, double dely, double fbond)
+{
+  start_atom(f, current, sum, i1);
+  sum[0] += delx * fbond;
+  sum[1] += dely * fbond;
+  if (to_i2) {
+    double *fi = f + 3 * i2;
+    fi[0] -= delx * fbond;
+    fi[1] -= dely * fbond;
+  }
 }
 
 } // namespace peridem_lmp

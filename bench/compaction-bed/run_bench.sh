@@ -24,7 +24,8 @@
 #   default: build, 3 repeats, 200 steps, 500 grains
 #   PERIDEM_BENCH_BONDS="peridem lps", PERIDEM_BENCH_RANKS="1 2",
 #   PERIDEM_BENCH_WARMUP=1000 (steps of the warm-up, once per bed),
-#   PERIDEM_BENCH_BASE=/work/main/build (previous build, side by side)
+#   PERIDEM_BENCH_BASE=/work/main/build (previous build, side by side),
+#   PERIDEM_BENCH_VARS="-var balance no -var g 0" (more -var settings of in.timed)
 # Cost against the number of grains:
 #   PERIDEM_BENCH_RANKS=1 PERIDEM_BENCH_BONDS=peridem PERIDEM_BENCH_WARMUP=300 \
 #     bench/compaction-bed/run_bench.sh build 3 100 50 200 500 2000
@@ -40,6 +41,7 @@ bonds_list=${PERIDEM_BENCH_BONDS:-peridem lps}
 ranks_list=${PERIDEM_BENCH_RANKS:-1 2}
 warmup=${PERIDEM_BENCH_WARMUP:-1000}
 base=${PERIDEM_BENCH_BASE:-}
+read -r -a timed_vars <<<"${PERIDEM_BENCH_VARS:-}"
 source "$here/unittest/scripts/mpi_env.sh"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
@@ -82,7 +84,7 @@ for n in "${grains[@]}"; do
       for _ in $(seq "$repeats"); do
         for bd in "${builds[@]}"; do
           mpirun -np "$np" "$bd/lmp_peridem" -in in.timed -var potentials "$pot" -var steps "$steps" \
-            -var restart "bed_${n}_$b.restart" -log log.t -screen none
+            -var restart "bed_${n}_$b.restart" "${timed_vars[@]}" -log log.t -screen none
           line=$(parse log.t)
           if [ -z "${best[$bd]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$bd]%% *} else 1)"; then
             best[$bd]="$line"

@@ -34,9 +34,10 @@ set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -We
 # (sqrtpd, divpd) only without errno (the roots take sums of squares, never negative) and,
 # below -O3 (LAMMPS's default build type RelWithDebInfo is -O2), only with -ftree-vectorize
 # (GCC 12: no sqrtpd at -O1/-O2/-O3 without -fno-math-errno, nor at -O2 without -ftree-vectorize).
-# The stand-alone build (cmake/PeridemLAMMPS.cmake, -O3) sets -fno-math-errno the same way.
-# This file only, so that LAMMPS's own files keep LAMMPS's flags.
+# No FMA contraction, so that its AVX-512 clone gives the one-by-one loop's bits
+# (tested: ChunkedLoopEqualsOneByOne). The stand-alone build (cmake/PeridemLAMMPS.cmake,
+# -O3) sets the same flags. This file only, so that LAMMPS's own files keep LAMMPS's flags.
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp APPEND PROPERTY COMPILE_OPTIONS
-    -fno-math-errno -ftree-vectorize)
+    -fno-math-errno -ftree-vectorize -ffp-contract=off)
 endif()

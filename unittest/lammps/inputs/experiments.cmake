@@ -53,3 +53,20 @@ add_test(NAME plus_collision_symmetry
           -in ${PROJECT_SOURCE_DIR}/examples/plus-collision/in.plus_collision -log none -echo none
           -var potentials ${PROJECT_SOURCE_DIR}/potentials -var n 20 -var check yes -var tag ctest
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+
+# examples/bed-compaction (Bhattacharya & Lipton 2023, §7.4), reduced (h = eps/4, 1000 steps,
+# stop at phi 0.7045): after each 500-step chunk, compute peridem/bed's volume fraction equals
+# sum V_i / (l (h - v t)) of the node volumes and the moving lid, the run stops on the phi
+# criterion after the second chunk, no node is lost; 1 and 2 ranks (the 2-rank run balances
+# the ranks between chunks)
+foreach(_np 1 2)
+  add_test(NAME bed_compaction_phi_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "PERIDEM-DONE at step 1000,"
+            ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${PROJECT_SOURCE_DIR}/examples/bed-compaction/in.compaction -log none -echo none
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials -var res 4 -var chunk 500
+            -var stop_phi 0.7045 -var check yes
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/bed_compaction_np${_np})
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/bed_compaction_np${_np})
+  set_tests_properties(bed_compaction_phi_np${_np} PROPERTIES TIMEOUT 300)
+endforeach()
