@@ -299,9 +299,19 @@ void BondPeridem::fill_cache()
 {
   // once per rebuild of the bond list (41 times in in.peri_impact's 1000 steps): a tight
   // loop over flat arrays, 4.5 % of that run's samples before (session 7)
-  const int *bl = neighbor->bondlist[0];
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
+  cache_ncalls = neighbor->ncalls;
+  cache_bondlist = bondlist;
+  if (nbondlist == 0) { // the bond list and x0 may not exist yet on this rank
+    cache.r0.clear();
+    cache.inv_r0.clear();
+    cache.k.clear();
+    cache.k_uniform = true;
+    cache.k_value = 0.0;
+    return;
+  }
+  const int *bl = bondlist[0];
   const double *x0 = atom->x0[0];
   const double *vfrac = atom->vfrac;
   cache.r0.assign(nbondlist, 0.0);
@@ -341,8 +351,6 @@ void BondPeridem::fill_cache()
       if (b[2] > 0) k[n] = stiffness(b[2], r0c[n], vfrac[b[0]], vfrac[b[1]]);
     }
   }
-  cache_ncalls = neighbor->ncalls;
-  cache_bondlist = bondlist;
 }
 
 /* ----------------------------------------------------------------------

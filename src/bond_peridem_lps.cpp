@@ -220,8 +220,9 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 
 template <int DIM> void BondPeridemLPS::dilation_pass()
 {
-  const int *bl = neighbor->bondlist[0];
   const int nbondlist = neighbor->nbondlist;
+  if (nbondlist == 0) return; // the bond list may not exist yet on this rank
+  const int *bl = neighbor->bondlist[0];
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   const double *x = atom->x[0];
@@ -271,8 +272,9 @@ template <int DIM> void BondPeridemLPS::dilation_pass()
 
 template <int DIM> void BondPeridemLPS::force_pass()
 {
-  const int *bl = neighbor->bondlist[0];
   const int nbondlist = neighbor->nbondlist;
+  if (nbondlist == 0) return; // the bond list may not exist yet on this rank
+  const int *bl = neighbor->bondlist[0];
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   const double *x = atom->x[0];

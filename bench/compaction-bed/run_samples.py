@@ -15,8 +15,9 @@ import collections
 import sys
 
 GROUPS = [("walls", "FixPeridemWall"), ("bonds", "BondPeridem"), ("contact", "PairPeridemContact"),
-          ("nve", "FixNVE"), ("gravity", "FixGravity"), ("enforce2d", "FixEnforce2D"),
-          ("neighbour", "Neighbor"), ("neighbour", "NPair"), ("neighbour", "NTopo")]
+          ("contact", "peridem::contact_force"), ("nve", "FixNVE"), ("gravity", "FixGravity"),
+          ("enforce2d", "FixEnforce2D"), ("neighbour", "Neighbor"), ("neighbour", "NPair"),
+          ("neighbour", "NTopo"), ("neighbour", "Domain::closest_image")]
 rows = []
 for line in sys.stdin:
     w = line.split(None, 3)

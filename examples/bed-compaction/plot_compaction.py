@@ -70,4 +70,4 @@ a2.set_ylabel("bulk damage")
 a2.set_xlabel("volume fraction phi")
 fig.savefig(sys.argv[2], dpi=110)
 print(f"{len(curve)} thermo rows, phi {phi[0]:.3f} to {phi[-1]:.3f}, "
-      f"largest load {max(load):.1f} N/m, final bulk damage {damage[-1]:.4f}")
+      f"largest load {max(load):.1f} N/m, final bulk damage {damage[-1]:.3g}")

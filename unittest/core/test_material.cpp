@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <unistd.h>
 #include <fstream>
 #include <string>
 
@@ -32,7 +33,9 @@ std::string potential(const std::string &file)
 // Writes `text` to a fresh file in a temporary directory and returns its path.
 std::string write_fixture(const std::string &name, const std::string &text)
 {
-  const auto dir = std::filesystem::temp_directory_path() / "peridem_test_material";
+  // one folder per process: two test runs at once (two checkouts) must not share it
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("peridem_test_material_" + std::to_string(static_cast<long>(getpid())));
   std::filesystem::create_directories(dir);
   const auto path = (dir / name).string();
   std::ofstream(path) << text;

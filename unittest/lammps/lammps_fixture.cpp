@@ -15,6 +15,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <unistd.h>
 #include <fstream>
 #include <mpi.h>
 
@@ -45,10 +47,16 @@ void write_text_file(const std::string &path, const std::string &text)
 void LammpsTest::SetUp()
 {
   const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
-  scratch_dir = (std::filesystem::temp_directory_path() /
-                 (std::string("peridem_") + info->test_suite_name() + "_" + info->name()))
-                    .string() +
-                "/";
+  // rank 0's process ID in the name: ctest -j runs the same test program on 2, 3 and 4 ranks
+  // at once (mpiN.*), and one run's TearDown removed the folder another was reading from
+  // (mpi4.compute_peridem_fragments failed that way, 1 run in 10, session 6)
+  long pid = static_cast<long>(getpid());
+  MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  scratch_dir =
+      (std::filesystem::temp_directory_path() / (std::string("peridem_") + info->test_suite_name() +
+                                                 "_" + info->name() + "_" + std::to_string(pid)))
+          .string() +
+      "/";
   // one rank makes the directory: on several ranks remove_all races
   int me = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
