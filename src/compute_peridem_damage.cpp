@@ -122,9 +122,18 @@ void ComputePeridemDamage::refresh()
     memory->create(damage, nmax, 3, "peridem/damage:damage");
     memory->create(intact, nmax, "peridem/damage:intact");
     memory->create(zintact, nmax, "peridem/damage:zintact");
+    refreshed = false;
   }
+  // thermo asks for the scalar and the vector one after the other: count the bonds once per
+  // timestep and state of the bonds (fix peridem/bonds' stamp changes at every run's setup and
+  // every break), not once per output (half of this compute's time in in.peri_impact)
+  const bigint stamp = bonds_fix->change_stamp();
+  if (refreshed && refreshed_step == update->ntimestep && refreshed_stamp == stamp) return;
   count_bonds();
   grain_means();
+  refreshed = true;
+  refreshed_step = update->ntimestep;
+  refreshed_stamp = stamp;
 }
 
 /* ----------------------------------------------------------------------

@@ -47,6 +47,9 @@ class ComputePeridemDamage : public Compute {
   int z_displacement; // 1: Z by eq. 14 as printed (|u_j - u_i|); 0: by the bond stretch
 
   void refresh();
+  bool refreshed = false;     // the arrays hold the counts of refreshed_step and _stamp
+  bigint refreshed_step = -1; // (fix peridem/bonds' change_stamp())
+  bigint refreshed_stamp = -1;
   void count_bonds();
   void grain_means();
 };

@@ -205,10 +205,12 @@ void FixPeridemBonds::min_pre_force(int)
 }
 void FixPeridemBonds::setup(int)
 {
+  stamp++;
   collect();
 }
 void FixPeridemBonds::min_setup(int)
 {
+  stamp++;
   clear_ghosts();
   collect();
 }
@@ -237,6 +239,7 @@ void FixPeridemBonds::remove_bond(Atom *atom, int i, tagint partner)
 
 void FixPeridemBonds::bond_broken(int i1, int i2, double z)
 {
+  stamp++;
   const tagint *tag = atom->tag;
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;

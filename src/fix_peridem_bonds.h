@@ -79,6 +79,9 @@ class FixPeridemBonds : public Fix {
   // the bond between local or ghost atoms i1, i2 broke with damage term z;
   // removes it from the bond arrays of the local atoms that store it
   void bond_broken(int i1, int i2, double z);
+  // changes at every run's (or minimisation's) setup and at every broken bond: computes
+  // that read the bonds evaluate them once per timestep and value of this stamp
+  bigint change_stamp() const { return stamp; }
 
   // per atom: number of broken bonds, largest Z term of a broken bond
   const double *broken_count() const { return nbroken; }
@@ -114,6 +117,7 @@ class FixPeridemBonds : public Fix {
   void clear_ghosts();
   void collect();
   static void remove_bond(class Atom *atom, int i, tagint partner);
+  bigint stamp = 0;
 };
 
 } // namespace LAMMPS_NS
