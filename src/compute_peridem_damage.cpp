@@ -126,9 +126,14 @@ void ComputePeridemDamage::refresh()
   }
   // thermo asks for the scalar and the vector one after the other: count the bonds once per
   // timestep and state of the bonds (fix peridem/bonds' stamp changes at every run's setup and
-  // every break), not once per output (half of this compute's time in in.peri_impact)
+  // every break), not once per output (half of this compute's time in in.peri_impact). A bond
+  // breaks on one rank only, and counting communicates: all ranks count again if one must.
   const bigint stamp = bonds_fix->change_stamp();
-  if (refreshed && refreshed_step == update->ntimestep && refreshed_stamp == stamp) return;
+  const int stale_here =
+      !(refreshed && refreshed_step == update->ntimestep && refreshed_stamp == stamp);
+  int stale = 0;
+  MPI_Allreduce(&stale_here, &stale, 1, MPI_INT, MPI_MAX, world);
+  if (!stale) return;
   count_bonds();
   grain_means();
   refreshed = true;
@@ -166,8 +171,8 @@ void ComputePeridemDamage::count_bonds()
       if (j < 0)
         error->one(FLERR, "{}: atom {} bonded to atom {} is missing on proc {}", STYLE, partner,
                    tag[i], comm->me);
-      const double *xi_ = x + 3 * i, *xj = x + 3 * j, *x0i = x0 + 3 * i, *x0j = x0 + 3 * j;
-      double dy[3] = {xj[0] - xi_[0], xj[1] - xi_[1], xj[2] - xi_[2]};
+      const double *yi = x + 3 * i, *yj = x + 3 * j, *x0i = x0 + 3 * i, *x0j = x0 + 3 * j;
+      double dy[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
       double xi[3] = {x0j[0] - x0i[0], x0j[1] - x0i[1], x0j[2] - x0i[2]};
       peridem_lmp::minimum_image(domain, dy[0], dy[1], dy[2]);
       peridem_lmp::minimum_image(domain, xi[0], xi[1], xi[2]);

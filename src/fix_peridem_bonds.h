@@ -79,8 +79,9 @@ class FixPeridemBonds : public Fix {
   // the bond between local or ghost atoms i1, i2 broke with damage term z;
   // removes it from the bond arrays of the local atoms that store it
   void bond_broken(int i1, int i2, double z);
-  // changes at every run's (or minimisation's) setup and at every broken bond: computes
-  // that read the bonds evaluate them once per timestep and value of this stamp
+  // changes at every run's (or minimisation's) setup and at every broken bond or deleted
+  // partner on this rank: computes that read the bonds evaluate them once per timestep and
+  // value of this stamp (agreeing across ranks: a break changes one rank's stamp only)
   bigint change_stamp() const { return stamp; }
 
   // per atom: number of broken bonds, largest Z term of a broken bond
@@ -89,7 +90,11 @@ class FixPeridemBonds : public Fix {
 
   // owned atom i lost an intact bond partner that was deleted (escaped
   // node, fix peridem/wall lost delete): the bond counts as broken
-  void partner_deleted(int i) { nbroken[i] += 1.0; }
+  void partner_deleted(int i)
+  {
+    nbroken[i] += 1.0;
+    stamp++;
+  }
   // state-based bonds (bond_style peridem/lps): the weighted volume m of each node in the
   // reference configuration, kept through migration and restarts; < 0 until computed
   double *weighted_volume() { return wvolume; }

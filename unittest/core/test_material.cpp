@@ -33,9 +33,20 @@ std::string potential(const std::string &file)
 // Writes `text` to a fresh file in a temporary directory and returns its path.
 std::string write_fixture(const std::string &name, const std::string &text)
 {
-  // one folder per process: two test runs at once (two checkouts) must not share it
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("peridem_test_material_" + std::to_string(static_cast<long>(getpid())));
+  // one folder per process: two test runs at once (two checkouts) must not share it;
+  // removed when the program ends
+  struct Folder {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() /
+        ("peridem_test_material_" + std::to_string(static_cast<long>(getpid())));
+    ~Folder()
+    {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  };
+  static const Folder folder;
+  const auto &dir = folder.path;
   std::filesystem::create_directories(dir);
   const auto path = (dir / name).string();
   std::ofstream(path) << text;
