@@ -117,15 +117,18 @@ void BondPeridem::compute(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   the force loop of most steps: bonds in chunks of CHUNK list
+   the force loop of most steps: bonds in chunks of at most CHUNK list
    entries, in three passes. (a) gathers the separations x1 - x2 into short
    arrays; (b) computes |y|, the stretch and F/|y| for the whole chunk
    without branches, so that the compiler vectorises the square roots and
    divisions (SSE2: two bonds per instruction; this file is compiled with
    -fno-math-errno, cmake/PeridemLAMMPS.cmake, without which GCC keeps each
    sqrt scalar for errno); (c) breaks bonds and adds the forces in list
-   order, summing those on i1 in registers while i1 repeats (LAMMPS lists
-   the bonds of one atom one after the other). Each force is the same
+   order, summing those on i1 in registers while i1 repeats. LAMMPS lists the
+   bonds of one atom one after the other, so the loop reads the list as
+   pieces with one i1 each (fill_pieces): per entry it streams i2 and 1/r0 only
+   (12 bytes, and the stiffness k when the bonds have different ones; LAMMPS's list
+   entry is 12 bytes on its own), and x1 once per piece. Each force is the same
    expression as in compute_one_by_one(), so the results are the same to
    the bit (tested: chunked_equals_one_by_one).
 ------------------------------------------------------------------------- */
@@ -134,14 +137,12 @@ void BondPeridem::compute(int eflag, int vflag)
 // plane (LAMMPS's 2d model), so z1 - z2 = 0 and |y|, the stretch and the force are the same
 // IEEE results without it (to the bit: tested, chunked_equals_one_by_one, 2d), and f_z gets
 // nothing. The 2d bed then gathers, sums and scatters two components instead of three.
-template <int DIM, bool UNIFORM_K>
+// ONE_TYPE: every intact entry has type cache.type_all (no per-entry type to stream).
+template <int DIM, bool UNIFORM_K, bool ONE_TYPE>
 inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
 {
-  constexpr int CHUNK = 64;
-  const int nbondlist = neighbor->nbondlist;
-  // LAMMPS's per-atom arrays and the bond list are contiguous
-  // (memory->create): index them flat, as LAMMPS's OPT styles do
-  const int *bl = neighbor->bondlist[0];
+  // LAMMPS's per-atom arrays are contiguous (memory->create): index them flat, as LAMMPS's
+  // OPT styles do
   const double *x = atom->x[0];
   double *f = atom->f[0];
   const int nlocal = atom->nlocal;
@@ -149,23 +150,34 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
   const double *inv_r0 = cache.inv_r0.data();
   const double *kb = cache.k.data();
   const double k_all = cache.k_value;
+  const int *partner = cache.partner.data();
+  const int *piece_atom = cache.piece_atom.data(), *piece_start = cache.piece_start.data();
+  const int *chunk_piece = cache.chunk_piece.data();
+  const int nchunks = int(cache.chunk_piece.size()) - 1;
+  const int *types = cache.type.data();
+  const int type_all = cache.type_all;
 
   alignas(64) double dx[CHUNK], dy[CHUNK], dz[CHUNK], rv[CHUNK], sv[CHUNK], fb[CHUNK];
   int current = -1;
   double fsum[3] = {0.0, 0.0, 0.0};
 
-  for (int n0 = 0; n0 < nbondlist; n0 += CHUNK) {
-    const int m = std::min(CHUNK, nbondlist - n0);
-    const int *b = bl + 3 * n0;
-    // (a) gather
-    for (int j = 0; j < m; j++) {
-      const double *x1 = x + 3 * b[3 * j], *x2 = x + 3 * b[3 * j + 1];
-      dx[j] = x1[0] - x2[0];
-      dy[j] = x1[1] - x2[1];
-      if (DIM == 3) dz[j] = x1[2] - x2[2];
+  for (int c = 0; c < nchunks; c++) {
+    const int p0 = chunk_piece[c], p1 = chunk_piece[c + 1];
+    const int n0 = piece_start[p0], m = piece_start[p1] - n0;
+    // (a) gather, x1 once per piece
+    for (int p = p0; p < p1; p++) {
+      const double *x1 = x + 3 * piece_atom[p];
+      const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
+      for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
+        const double *x2 = x + 3 * partner[n];
+        const int j = n - n0;
+        dx[j] = x10 - x2[0];
+        dy[j] = x11 - x2[1];
+        if (DIM == 3) dz[j] = x12 - x2[2];
+      }
     }
-    // (b) no branches: vectorised. An entry with r = 0 (coinciding nodes)
-    // gets an infinite or undefined fb here, and no force in (c)
+    // (b) no branches: vectorised. An entry with r = 0 (coinciding nodes, or a broken entry,
+    // whose partner is i1) gets an infinite or undefined fb here, and no force in (c)
     const double *ir = inv_r0 + n0, *kk = UNIFORM_K ? nullptr : kb + n0;
     for (int j = 0; j < m; j++) {
       const double rsq =
@@ -176,21 +188,25 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
       fb[j] = -peridem::bond_force_per_length(UNIFORM_K ? k_all : kk[j], ir[j], 1.0 / r);
     }
     // (c) forces in list order
-    for (int j = 0; j < m; j++) {
-      const int type = b[3 * j + 2];
-      if (type <= 0) continue;
-      const int i1 = b[3 * j], i2 = b[3 * j + 1];
-      if (break_flag && peridem::bond_breaks(sv[j], s0_break[type], breakage)) {
-        break_bond(n0 + j, i1, i2, cache.r0[n0 + j], s0[type]);
-        continue;
+    for (int p = p0; p < p1; p++) {
+      const int i1 = piece_atom[p];
+      for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
+        const int i2 = partner[n];
+        if (i2 == i1) continue; // broken
+        const int type = ONE_TYPE ? type_all : types[n];
+        const int j = n - n0;
+        if (break_flag && peridem::bond_breaks(sv[j], s0_break[type], breakage)) {
+          break_bond(n, i1, i2, cache.r0[n], s0[type]);
+          continue;
+        }
+        const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
+        if (DIM == 3)
+          peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
+                                      dy[j], dz[j], fbond);
+        else
+          peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
+                                         dx[j], dy[j], fbond);
       }
-      const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
-      if (DIM == 3)
-        peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
-                                    dy[j], dz[j], fbond);
-      else
-        peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
-                                       dy[j], fbond);
     }
   }
   if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
@@ -207,11 +223,18 @@ __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 void BondPeridem::compute_chunked()
 {
-  const bool planar = domain->dimension == 2;
-  if (cache.k_uniform)
-    planar ? chunked_pass<2, true>() : chunked_pass<3, true>();
-  else
-    planar ? chunked_pass<2, false>() : chunked_pass<3, false>();
+  const bool planar = domain->dimension == 2, one_type = cache.type_all > 0;
+  if (cache.k_uniform) {
+    if (one_type)
+      planar ? chunked_pass<2, true, true>() : chunked_pass<3, true, true>();
+    else
+      planar ? chunked_pass<2, true, false>() : chunked_pass<3, true, false>();
+  } else {
+    if (one_type)
+      planar ? chunked_pass<2, false, true>() : chunked_pass<3, false, true>();
+    else
+      planar ? chunked_pass<2, false, false>() : chunked_pass<3, false, false>();
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -309,6 +332,7 @@ void BondPeridem::fill_cache()
     cache.k.clear();
     cache.k_uniform = true;
     cache.k_value = 0.0;
+    fill_pieces();
     return;
   }
   const int *bl = bondlist[0];
@@ -354,6 +378,57 @@ void BondPeridem::fill_cache()
       if (b[2] > 0) k[n] = stiffness(b[2], r0c[n], vfrac[b[0]], vfrac[b[1]]);
     }
   }
+  fill_pieces();
+}
+
+// the bond list as the chunked loop reads it (BondCache): i2 per entry, i1 per piece of
+// consecutive entries with one i1, the pieces grouped into chunks of at most CHUNK entries,
+// and one type for the whole list when the intact entries share it
+void BondPeridem::fill_pieces()
+{
+  const int nbondlist = neighbor->nbondlist;
+  cache.partner.resize(nbondlist);
+  cache.piece_atom.clear();
+  cache.piece_start.clear();
+  cache.chunk_piece.clear();
+  cache.type.clear();
+  cache.type_all = 1; // any valid type when no entry is intact: no intact entry reads it
+  if (nbondlist == 0) {
+    cache.piece_start.push_back(0);
+    cache.chunk_piece.push_back(0);
+    return;
+  }
+  const int *bl = neighbor->bondlist[0];
+  int *partner = cache.partner.data();
+  int first_type = 0;
+  bool mixed = false;
+  for (int n = 0; n < nbondlist; n++) {
+    const int *b = bl + 3 * n;
+    const int i1 = b[0];
+    partner[n] = b[2] > 0 ? b[1] : i1;
+    if (b[2] > 0) {
+      if (first_type == 0) first_type = b[2];
+      mixed = mixed || b[2] != first_type;
+    }
+    if (cache.piece_atom.empty() || cache.piece_atom.back() != i1 ||
+        n - cache.piece_start.back() == CHUNK) {
+      cache.piece_atom.push_back(i1);
+      cache.piece_start.push_back(n);
+    }
+  }
+  const int npieces = int(cache.piece_atom.size());
+  cache.piece_start.push_back(nbondlist);
+  const int *start = cache.piece_start.data();
+  for (int p = 0; p < npieces; p++)
+    if (cache.chunk_piece.empty() || start[p + 1] - start[cache.chunk_piece.back()] > CHUNK)
+      cache.chunk_piece.push_back(p);
+  cache.chunk_piece.push_back(npieces);
+  if (mixed) {
+    cache.type_all = 0;
+    cache.type.resize(nbondlist);
+    for (int n = 0; n < nbondlist; n++) cache.type[n] = bl[3 * n + 2];
+  } else if (first_type > 0)
+    cache.type_all = first_type;
 }
 
 /* ----------------------------------------------------------------------
@@ -367,6 +442,8 @@ void BondPeridem::fill_cache()
 void BondPeridem::break_bond(int n, int i1, int i2, double r0, double s0type)
 {
   neighbor->bondlist[n][2] = 0;
+  // the chunked loop's copy of the list (bond_style peridem's cache; peridem/lps has its own)
+  if (std::size_t(n) < cache.partner.size()) cache.partner[n] = i1;
   double **x = atom->x;
   double dy[3];
   for (int d = 0; d < 3; d++) dy[d] = x[i2][d] - x[i1][d];
@@ -818,5 +895,8 @@ void *BondPeridem::extract(const char *str, int &dim)
 double BondPeridem::memory_usage()
 {
   return Bond::memory_usage() +
-         (cache.r0.capacity() + cache.inv_r0.capacity() + cache.k.capacity()) * sizeof(double);
+         (cache.r0.capacity() + cache.inv_r0.capacity() + cache.k.capacity()) * sizeof(double) +
+         (cache.partner.capacity() + cache.piece_atom.capacity() + cache.piece_start.capacity() +
+          cache.chunk_piece.capacity() + cache.type.capacity()) *
+             sizeof(int);
 }

@@ -105,15 +105,28 @@ class BondPeridem : public Bond {
     std::vector<double> k;      // c w(|xi|) V_i V_j, times the volume factor (if not uniform)
     bool k_uniform = false;     // every intact bond of the list has k = k_value (k empty)
     double k_value = 0.0;
+    // The list as the chunked loop reads it: LAMMPS lists the bonds of one atom i1 one after
+    // the other, so the loop streams only i2 per entry (partner) and takes i1 once per piece
+    // of consecutive entries with the same i1 (a piece holds at most CHUNK entries). Pieces
+    // are grouped into chunks of at most CHUNK entries (chunk_piece: first piece of each
+    // chunk, and the number of pieces at the end). A broken entry has partner i1 (no force).
+    std::vector<int> partner;     // i2 of each entry, i1 once broken
+    std::vector<int> piece_atom;  // i1 of each piece
+    std::vector<int> piece_start; // first entry of each piece, then the number of entries
+    std::vector<int> chunk_piece; // first piece of each chunk, then the number of pieces
+    int type_all = 0;             // the type of every intact entry, or 0 when they differ
+    std::vector<int> type;        // the type of each entry, when they differ (else empty)
     std::size_t size() const { return r0.size(); }
   };
   BondCache cache;
+  static constexpr int CHUNK = 64; // entries per chunk of the chunked loop
   bigint cache_ncalls;
   int **cache_bondlist;
   void fill_cache();
   void compute_one_by_one(int eflag);
   void compute_chunked();
-  template <int DIM, bool UNIFORM_K> void chunked_pass();
+  template <int DIM, bool UNIFORM_K, bool ONE_TYPE> void chunked_pass();
+  void fill_pieces();
   double bond_stiffness(int type, double r0, int i1, int i2) const;
   double stiffness(int type, double r0, double vol1, double vol2) const;
 

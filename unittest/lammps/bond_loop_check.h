@@ -35,19 +35,24 @@ struct BondForces {
   int broken = 0, total = 0;
 };
 
-// shear and jitter the nodes (spacing h) of a set-up system, then one call of the bond style
+// shear and jitter the nodes (spacing h) of a set-up system and call the bond style, twice
+// without rebuilding the bond list: the second call meets the entries broken in the first
+// (the forces are those of the second call, which takes back most of the first shear, so
+// that a broken entry taken for intact would pull)
 inline BondForces forces_after_shear(LAMMPS_NS::LAMMPS *lmp, int dim, double h, int eflag)
 {
   LAMMPS_NS::Atom *atom = lmp->atom;
-  for (int i = 0; i < atom->nlocal; i++) {
-    const double t = atom->tag[i];
-    atom->x[i][0] += 2e-3 * h * std::sin(0.7 * t) + 1e-3 * atom->x[i][1];
-    atom->x[i][1] += 2e-3 * h * std::cos(1.3 * t);
-    if (dim == 3) atom->x[i][2] += 2e-3 * h * std::sin(2.1 * t) + 5e-4 * atom->x[i][0];
+  for (const double amount : {1.0, -0.9}) {
+    for (int i = 0; i < atom->nlocal; i++) {
+      const double t = atom->tag[i];
+      atom->x[i][0] += amount * (2e-3 * h * std::sin(0.7 * t) + 1e-3 * atom->x[i][1]);
+      atom->x[i][1] += amount * 2e-3 * h * std::cos(1.3 * t);
+      if (dim == 3) atom->x[i][2] += amount * (2e-3 * h * std::sin(2.1 * t) + 5e-4 * atom->x[i][0]);
+    }
+    for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+      atom->f[i][0] = atom->f[i][1] = atom->f[i][2] = 0.0;
+    lmp->force->bond->compute(eflag, 0);
   }
-  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
-    atom->f[i][0] = atom->f[i][1] = atom->f[i][2] = 0.0;
-  lmp->force->bond->compute(eflag, 0);
   BondForces r;
   for (int i = 0; i < atom->nlocal; i++)
     r.f[atom->tag[i]] = {atom->f[i][0], atom->f[i][1], atom->f[i][2]};

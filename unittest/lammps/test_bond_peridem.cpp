@@ -58,17 +58,17 @@ int family_bound(int dimension, double m)
 // A jittered lattice block forming one grain, with peridynamic bonds.
 // `style_args` follow "bond_style peridem", `coeff` follows "bond_coeff 1".
 std::string grain_block(int dimension, int n, double h, double horizon,
-                        const std::string &style_args, const std::string &coeff)
+                        const std::string &style_args, const std::string &coeff, int bond_types = 1)
 {
   const std::string zspan = dimension == 2 ? "-0.5 0.5" : fmt::format("0 {}", n);
   return fmt::format(
       "units si\ndimension {dim}\nboundary f f {zb}\natom_style peridem\natom_modify map array\n"
       "lattice {lat} {h}\nregion box block -2 {m} -2 {m} {zbox} units lattice\n"
-      "create_box 1 box bond/types 1 extra/bond/per/atom {nb} extra/special/per/atom {nb}\n"
+      "create_box 1 box bond/types {nbt} extra/bond/per/atom {nb} extra/special/per/atom {nb}\n"
       "region grain block 0 {n1} 0 {n1} {zspan} units lattice\ncreate_atoms 1 region grain\n"
       "set type 1 mol 1\nset type 1 volume {vol}\nset type 1 mass {mass}\n"
       "pair_style zero {cut}\npair_coeff * *\nspecial_bonds lj/coul 0.0 1.0 1.0\n"
-      "bond_style peridem {style}\nbond_coeff 1 {coeff}\n"
+      "bond_style peridem {style}\nbond_coeff * {coeff}\n"
       "create_bonds many all all 1 0.0 {horizon}\n"
       "thermo_style custom step ke ebond etotal\nthermo_modify norm no\n",
       fmt::arg("dim", dimension), fmt::arg("zb", dimension == 2 ? "p" : "f"),
@@ -78,7 +78,8 @@ std::string grain_block(int dimension, int n, double h, double horizon,
       fmt::arg("zspan", dimension == 2 ? zspan : fmt::format("0 {}", n - 0.5)),
       fmt::arg("vol", std::pow(h, dimension)), fmt::arg("mass", 1000.0 * std::pow(h, dimension)),
       fmt::arg("cut", 1.2 * horizon), fmt::arg("style", style_args), fmt::arg("coeff", coeff),
-      fmt::arg("horizon", horizon), fmt::arg("nb", family_bound(dimension, horizon / h)));
+      fmt::arg("horizon", horizon), fmt::arg("nb", family_bound(dimension, horizon / h)),
+      fmt::arg("nbt", bond_types));
 }
 
 } // namespace
@@ -347,22 +348,47 @@ TEST_F(BondPeridem, CompressionBreaksBondsOnlyWhenAskedTo)
 // forces, to the bit, and breaks the same bonds as the loop of energy steps, which takes one
 // bond at a time with z in every bond (the 2d chunked loop leaves z out). A jittered 2D block
 // (100 nodes, 1058 bonds: 17 chunks of 64) and a 3D one (216 nodes), a quarter of the bonds
-// stretched past s0; one stiffness k for all bonds (read once, not per bond) and, with
-// volume_correction linear, k per bond; the forces are computed by calling the bond style
-// directly.
+// stretched past s0, two calls without a new bond list (the second meets broken entries);
+// one stiffness k and one type for all bonds (read once, not per bond); with
+// volume_correction linear, k per bond; with a second bond type on the bonds between nodes
+// with x below the middle, type per bond (another Gc: one k) or type and k per bond (another E
+// too); with horizon 4.5 h, atoms with more bonds than a chunk holds (64), whose bonds the
+// loop takes in pieces. The forces are computed by calling the bond style directly.
 TEST_F(BondPeridem, ChunkedLoopEqualsOneByOne)
 {
-  const double h = 0.001, horizon = 3.0001 * h;
-  for (const char *style : {"", "volume_correction linear"})
+  const double h = 0.001;
+  for (const std::string style :
+       {"uniform k", "volume_correction linear", "two types", "two types and k", "long runs"})
     for (const int dim : {2, 3}) {
+      const int n = dim == 2 ? 10 : 6;
+      const double horizon = (style == "long runs" ? 4.5001 : 3.0001) * h;
+      const std::string coeff = fmt::format("E 1e9 Gc 1 horizon {} spacing {}", horizon, h);
       auto forces = [&](int eflag) {
         command("clear");
-        command(grain_block(dim, dim == 2 ? 10 : 6, h, horizon, style,
-                            fmt::format("E 1e9 Gc 1 horizon {} spacing {}", horizon, h)));
+        if (style.rfind("two types", 0) == 0) {
+          command(grain_block(dim, n, h, horizon, "", coeff, 2));
+          command(fmt::format("bond_coeff 2 E {} Gc 1.5 horizon {} spacing {}",
+                              style == "two types" ? "1e9" : "2e9", horizon, h));
+          command(fmt::format("region left block INF {} INF INF INF INF units box", n * h / 2));
+          command("group left region left\nset group left bond 2");
+        } else
+          command(grain_block(dim, n, h, horizon, style == "volume_correction linear" ? style : "",
+                              coeff));
         command("run 0 post no");
         return bond_loop_check::forces_after_shear(lmp, dim, h, eflag);
       };
       const auto one = forces(1), chunked = forces(0);
-      bond_loop_check::expect_same_bits(one, chunked, dim, *style ? style : "uniform k");
+      bond_loop_check::expect_same_bits(one, chunked, dim, style.c_str());
+      if (style == "long runs" && dim == 3) {
+        // the longest run of one i1 in LAMMPS's bond list is longer than a chunk
+        int longest = 0, run = 0;
+        for (int k = 0; k < lmp->neighbor->nbondlist; k++) {
+          const bool same =
+              k > 0 && lmp->neighbor->bondlist[k][0] == lmp->neighbor->bondlist[k - 1][0];
+          run = same ? run + 1 : 1;
+          longest = std::max(longest, run);
+        }
+        EXPECT_GT(longest, 64);
+      }
     }
 }
