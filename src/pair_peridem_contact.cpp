@@ -30,6 +30,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "lmp_peridem_restart.h"
+#include "lmp_peridem_bond_loop.h"
 #include "lmp_peridem_image.h"
 #include "error.h"
 #include "force.h"
@@ -91,19 +92,22 @@ PairPeridemContact::~PairPeridemContact()
 
 bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) const
 {
-  double **x = atom->x;
-  double **v = atom->v;
-  double **x0 = atom->x0;
+  // flat from x[0], v[0], x0[0] (LAMMPS's per-atom arrays are contiguous): in a big bed the
+  // few nodes in contact are far apart in memory, and each row pointer was one more cache
+  // miss before the data
+  const double *xi = atom->x[0] + 3 * i, *xj = atom->x[0] + 3 * j;
+  const double *vi = atom->v[0] + 3 * i, *vj = atom->v[0] + 3 * j;
   in.ref_dist = -1.0;
   if (atom->molecule[i] == atom->molecule[j]) {
     if (!self_contact) return false;
-    double d0[3] = {x0[j][0] - x0[i][0], x0[j][1] - x0[i][1], x0[j][2] - x0[i][2]};
+    const double *x0i = atom->x0[0] + 3 * i, *x0j = atom->x0[0] + 3 * j;
+    double d0[3] = {x0j[0] - x0i[0], x0j[1] - x0i[1], x0j[2] - x0i[2]};
     peridem_lmp::minimum_image(domain, d0[0], d0[1], d0[2]);
     in.ref_dist = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
   }
   for (int k = 0; k < 3; k++) {
-    in.sep[k] = x[j][k] - x[i][k];
-    in.vrel[k] = v[i][k] - v[j][k];
+    in.sep[k] = xj[k] - xi[k];
+    in.vrel[k] = vi[k] - vj[k];
   }
   in.vol_i = atom->vfrac[i];
   in.vol_j = atom->vfrac[j];
@@ -140,8 +144,9 @@ void PairPeridemContact::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  double **x = atom->x;
-  double **f = atom->f;
+  // flat (pair_input explains); a rank without atoms may have no arrays yet
+  const double *x = atom->x ? atom->x[0] : nullptr;
+  double *f = atom->f ? atom->f[0] : nullptr;
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
@@ -164,9 +169,10 @@ void PairPeridemContact::compute(int eflag, int vflag)
     for (int jj = 0; jj < numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const int jtype = type[j];
-      const double dx = x[j][0] - x[i][0];
-      const double dy = x[j][1] - x[i][1];
-      const double dz = x[j][2] - x[i][2];
+      const double *xi = x + 3 * i, *xj = x + 3 * j;
+      const double dx = xj[0] - xi[0];
+      const double dy = xj[1] - xi[1];
+      const double dz = xj[2] - xi[2];
       const double rsq = dx * dx + dy * dy + dz * dz;
       if (rsq >= cutsq[itype][jtype]) continue;
       const peridem_lmp::ContactSpec &sp = spec[itype][jtype];
@@ -184,15 +190,9 @@ void PairPeridemContact::compute(int eflag, int vflag)
       const peridem::ContactResult res = peridem::contact_force(in, sp.params);
       if (!res.contact) continue;
 
-      f[i][0] += res.f[0];
-      f[i][1] += res.f[1];
-      f[i][2] += res.f[2];
+      peridem_lmp::add_force(f, i, res.f[0], res.f[1], res.f[2]);
       const bool both = newton || j < nlocal;
-      if (both) {
-        f[j][0] -= res.f[0];
-        f[j][1] -= res.f[1];
-        f[j][2] -= res.f[2];
-      }
+      if (both) peridem_lmp::add_force(f, j, -res.f[0], -res.f[1], -res.f[2]);
       // a pair across ranks with newton off is computed on both ranks
       dissipated_now -= res.power * dt * (both ? 1.0 : 0.5);
       if (evflag)
