@@ -896,7 +896,13 @@ double BondPeridem::memory_usage()
 {
   return Bond::memory_usage() +
          (cache.r0.capacity() + cache.inv_r0.capacity() + cache.k.capacity()) * sizeof(double) +
-         (cache.partner.capacity() + cache.piece_atom.capacity() + cache.piece_start.capacity() +
-          cache.chunk_piece.capacity() + cache.type.capacity()) *
-             sizeof(int);
+         pieces_memory();
+}
+
+double BondPeridem::pieces_memory() const
+{
+  return double(cache.partner.capacity() + cache.piece_atom.capacity() +
+                cache.piece_start.capacity() + cache.chunk_piece.capacity() +
+                cache.type.capacity()) *
+         sizeof(int);
 }

@@ -127,6 +127,7 @@ class BondPeridem : public Bond {
   void compute_chunked();
   template <int DIM, bool UNIFORM_K, bool ONE_TYPE> void chunked_pass();
   void fill_pieces();
+  double pieces_memory() const;
   double bond_stiffness(int type, double r0, int i1, int i2) const;
   double stiffness(int type, double r0, double vol1, double vol2) const;
 

@@ -108,7 +108,10 @@ void BondPeridemLPS::fill_lps_cache()
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
   const double *vfrac = atom->vfrac;
-  lcache.resize(nbondlist);
+  lcache.r0.resize(nbondlist);
+  lcache.k.resize(nbondlist);
+  lcache.wi.resize(nbondlist);
+  lcache.wj.resize(nbondlist);
   current_length.resize(nbondlist);
   for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
@@ -121,11 +124,15 @@ void BondPeridemLPS::fill_lps_cache()
                             ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM, r0,
                                                      horizon[type], spacing[type])
                             : 1.0;
-    lcache[n] = {r0, w * beta * vfrac[i1] * vfrac[i2], w * beta * r0 * vfrac[i2],
-                 w * beta * r0 * vfrac[i1]};
+    lcache.r0[n] = r0;
+    lcache.k[n] = w * beta * vfrac[i1] * vfrac[i2];
+    lcache.wi[n] = w * beta * r0 * vfrac[i2];
+    lcache.wj[n] = w * beta * r0 * vfrac[i1];
   }
   cache_ncalls = neighbor->ncalls;
   cache_bondlist = bondlist;
+  // the bond list by pieces with one i1, as bond_style peridem's loop reads it
+  fill_pieces();
 }
 
 /* ----------------------------------------------------------------------
@@ -155,8 +162,8 @@ void BondPeridemLPS::compute_weighted_volume()
   for (int n = 0; n < neighbor->nbondlist; n++) {
     if (bondlist[n][2] <= 0) continue;
     const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-    sum[i1] += lcache[n].wi * lcache[n].r0;
-    if (newton_bond || i2 < nlocal) sum[i2] += lcache[n].wj * lcache[n].r0;
+    sum[i1] += lcache.wi[n] * lcache.r0[n];
+    if (newton_bond || i2 < nlocal) sum[i2] += lcache.wj[n] * lcache.r0[n];
   }
   if (newton_bond) bonds_fix->reverse_sum(sum);
   for (int i = 0; i < nlocal; i++)
@@ -181,10 +188,11 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 
   // (1) dilation pass
   for (int i = 0; i < nall; i++) sum[i] = 0.0;
-  if (domain->dimension == 2)
-    dilation_pass<2>();
+  const bool planar = domain->dimension == 2, one_type = cache.type_all > 0;
+  if (one_type)
+    planar ? dilation_pass<2, true>() : dilation_pass<3, true>();
   else
-    dilation_pass<3>();
+    planar ? dilation_pass<2, false>() : dilation_pass<3, false>();
 
   // (2) theta_i = (d/m_i) sum (Jha et al. 2021, eq. 34), complete on owners and ghosts
   if (newton_bond) bonds_fix->reverse_sum(sum);
@@ -203,105 +211,121 @@ void BondPeridemLPS::compute(int eflag, int vflag)
   // with z; the others without z in 2d (the same forces, to the bit)
   if (evflag || (break_after_force && break_flag))
     force_pass_one_by_one(eflag);
-  else if (domain->dimension == 2)
-    force_pass<2>();
+  else if (one_type)
+    planar ? force_pass<2, true>() : force_pass<3, true>();
   else
-    force_pass<3>();
+    planar ? force_pass<2, false>() : force_pass<3, false>();
 }
 
 /* ----------------------------------------------------------------------
    pass (1): extension e = |y| - r0 of each bond, breakage (unless
    break_order after_force), sum omega beta r0 e V into both nodes, the sum on
-   i1 in a register while i1 repeats. DIM 2 leaves z out: 2d nodes lie in one
-   plane, so |y| is the same IEEE result without it. (Chunks with vectorised
-   square roots, as bond_style peridem's loop, made both LPS passes 30 %
-   slower on the 500-grain bed, session 7: not kept.)
+   i1 in a register while i1 repeats. The list is read by pieces with one i1
+   (bond_style peridem's fill_pieces: i2 per entry, i1 and x1 once per piece, a broken
+   entry has partner i1; ONE_TYPE: one bond type for the list). DIM 2 leaves z out: 2d nodes
+   lie in one plane, so |y| is the same IEEE result without it. (Chunks with vectorised
+   square roots, as bond_style peridem's loop, made both LPS passes 30 % slower on the
+   500-grain bed, session 7: not kept.)
 ------------------------------------------------------------------------- */
 
-template <int DIM> void BondPeridemLPS::dilation_pass()
+template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
 {
-  const int nbondlist = neighbor->nbondlist;
-  if (nbondlist == 0) return; // the bond list may not exist yet on this rank
-  const int *bl = neighbor->bondlist[0];
+  if (neighbor->nbondlist == 0) return; // the bond list may not exist yet on this rank
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   const double *x = atom->x[0];
-  const LpsCache *bc = lcache.data();
+  const double *r0c = lcache.r0.data(), *wic = lcache.wi.data(), *wjc = lcache.wj.data();
   double *len = current_length.data();
+  const int *partner = cache.partner.data(), *types = cache.type.data();
+  const int *piece_atom = cache.piece_atom.data(), *piece_start = cache.piece_start.data();
+  const int npieces = int(cache.piece_atom.size());
+  const int type_all = cache.type_all;
 
   int current = -1;
   double acc = 0.0;
-  for (int n = 0; n < nbondlist; n++) {
-    const int *b = bl + 3 * n;
-    const int type = b[2];
-    if (type <= 0) continue;
-    const int i1 = b[0], i2 = b[1];
-    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-    const double delx = x1[0] - x2[0], dely = x1[1] - x2[1];
-    double rsq = delx * delx + dely * dely;
-    if (DIM == 3) {
-      const double delz = x1[2] - x2[2];
-      rsq += delz * delz;
-    }
-    const double r = std::sqrt(rsq);
-    const double e = r - bc[n].r0;
-    // a bond that breaks now takes no part in this step (default order)
-    if (!break_after_force && break_flag &&
-        peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage)) {
-      break_bond(n, i1, i2, bc[n].r0, s0[type]);
-      continue;
-    }
-    len[n] = r;
+  for (int p = 0; p < npieces; p++) {
+    const int i1 = piece_atom[p];
+    // the sums of the previous i1 are complete: no entry between them and this piece adds
+    // anything (the same order of additions as one entry at a time)
     if (i1 != current) {
       if (current >= 0) sum[current] += acc;
       current = i1;
       acc = 0.0;
     }
-    acc += bc[n].wi * e;
-    if (newton_bond || i2 < nlocal) sum[i2] += bc[n].wj * e;
+    const double *x1 = x + 3 * i1;
+    const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
+    for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
+      const int i2 = partner[n];
+      if (i2 == i1) continue; // broken
+      const int type = ONE_TYPE ? type_all : types[n];
+      const double *x2 = x + 3 * i2;
+      const double delx = x10 - x2[0], dely = x11 - x2[1];
+      double rsq = delx * delx + dely * dely;
+      if (DIM == 3) {
+        const double delz = x12 - x2[2];
+        rsq += delz * delz;
+      }
+      const double r = std::sqrt(rsq);
+      const double ext = r - r0c[n];
+      // a bond that breaks now takes no part in this step (default order)
+      if (!break_after_force && break_flag &&
+          peridem::bond_breaks(ext / r0c[n], s0_break[type], breakage)) {
+        break_bond(n, i1, i2, r0c[n], s0[type]);
+        continue;
+      }
+      len[n] = r;
+      acc += wic[n] * ext;
+      if (newton_bond || i2 < nlocal) sum[i2] += wjc[n] * ext;
+    }
   }
   if (current >= 0) sum[current] += acc;
 }
 
 /* ----------------------------------------------------------------------
    pass (3) of most steps (no energy or virial, default break order): the
-   force of each intact bond with the lengths of pass (1); DIM 2 leaves z out
-   (the same forces to the bit as force_pass_one_by_one(), which takes z:
-   tested, PlainForcePassEqualsOneByOne)
+   force of each intact bond with the lengths of pass (1), by pieces as pass (1);
+   DIM 2 leaves z out (the same forces to the bit as force_pass_one_by_one(), which takes z
+   and one entry at a time: tested, PlainForcePassEqualsOneByOne)
 ------------------------------------------------------------------------- */
 
-template <int DIM> void BondPeridemLPS::force_pass()
+template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
 {
-  const int nbondlist = neighbor->nbondlist;
-  if (nbondlist == 0) return; // the bond list may not exist yet on this rank
-  const int *bl = neighbor->bondlist[0];
+  if (neighbor->nbondlist == 0) return; // the bond list may not exist yet on this rank
   const int nlocal = atom->nlocal;
   const int newton_bond = force->newton_bond;
   const double *x = atom->x[0];
   double *f = atom->f[0];
-  const LpsCache *bc = lcache.data();
+  const double *r0c = lcache.r0.data(), *kc = lcache.k.data();
   const double *len = current_length.data();
   const peridem::LpsConstants *lc = constants.data();
+  const int *partner = cache.partner.data(), *types = cache.type.data();
+  const int *piece_atom = cache.piece_atom.data(), *piece_start = cache.piece_start.data();
+  const int npieces = int(cache.piece_atom.size());
+  const int type_all = cache.type_all;
 
   int current = -1;
   double fsum[3] = {0.0, 0.0, 0.0};
-  for (int n = 0; n < nbondlist; n++) {
-    const int *b = bl + 3 * n;
-    const int type = b[2];
-    if (type <= 0) continue;
-    const int i1 = b[0], i2 = b[1];
-    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-    const double r = len[n];
-    const double F =
-        peridem::lps_bond_force(lc[type], bc[n].k, bc[n].r0, r - bc[n].r0, theta_over_m[i1],
-                                theta_over_m[i2], inv_m[i1], inv_m[i2]);
-    const double fbond = r > 0.0 ? -F / r : 0.0;
-    if (DIM == 3)
-      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
-                                  x1[0] - x2[0], x1[1] - x2[1], x1[2] - x2[2], fbond);
-    else
-      peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
-                                     x1[0] - x2[0], x1[1] - x2[1], fbond);
+  for (int p = 0; p < npieces; p++) {
+    const int i1 = piece_atom[p];
+    const double *x1 = x + 3 * i1;
+    const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
+    const double tm1 = theta_over_m[i1], im1 = inv_m[i1];
+    for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
+      const int i2 = partner[n];
+      if (i2 == i1) continue; // broken
+      const int type = ONE_TYPE ? type_all : types[n];
+      const double *x2 = x + 3 * i2;
+      const double r = len[n];
+      const double F = peridem::lps_bond_force(lc[type], kc[n], r0c[n], r - r0c[n], tm1,
+                                               theta_over_m[i2], im1, inv_m[i2]);
+      const double fbond = r > 0.0 ? -F / r : 0.0;
+      if (DIM == 3)
+        peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
+                                    x10 - x2[0], x11 - x2[1], x12 - x2[2], fbond);
+      else
+        peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
+                                       x10 - x2[0], x11 - x2[1], fbond);
+    }
   }
   if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
@@ -318,7 +342,7 @@ void BondPeridemLPS::force_pass_one_by_one(int eflag)
   const int newton_bond = force->newton_bond;
   const double *x = atom->x[0];
   double *f = atom->f[0];
-  const LpsCache *bc = lcache.data();
+  const double *r0c = lcache.r0.data(), *kc = lcache.k.data();
   const double *len = current_length.data();
 
   // volumetric energy density needs theta on ghosts too: theta = (theta/m)/(1/m)
@@ -338,8 +362,8 @@ void BondPeridemLPS::force_pass_one_by_one(int eflag)
     const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
     const double delx = x1[0] - x2[0], dely = x1[1] - x2[1], delz = x1[2] - x2[2];
     const double r = len[n];
-    const double e = r - bc[n].r0;
-    const double F = peridem::lps_bond_force(lc[type], bc[n].k, bc[n].r0, e, theta_over_m[i1],
+    const double e = r - r0c[n];
+    const double F = peridem::lps_bond_force(lc[type], kc[n], r0c[n], e, theta_over_m[i1],
                                              theta_over_m[i2], inv_m[i1], inv_m[i2]);
     // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
     const double fbond = r > 0.0 ? -F / r : 0.0;
@@ -347,13 +371,13 @@ void BondPeridemLPS::force_pass_one_by_one(int eflag)
                                 delz, fbond);
     if (evflag) {
       if (eflag)
-        ebond = peridem::lps_bond_energy(lc[type], bc[n].k, bc[n].r0, e, theta_of(i1), theta_of(i2),
+        ebond = peridem::lps_bond_energy(lc[type], kc[n], r0c[n], e, theta_of(i1), theta_of(i2),
                                          inv_m[i1], inv_m[i2]);
       ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
     }
     if (break_after_force && break_flag &&
-        peridem::bond_breaks(e / bc[n].r0, s0_break[type], breakage))
-      break_bond(n, i1, i2, bc[n].r0, s0[type]);
+        peridem::bond_breaks(e / r0c[n], s0_break[type], breakage))
+      break_bond(n, i1, i2, r0c[n], s0[type]);
   }
   if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
 }
@@ -567,6 +591,10 @@ void *BondPeridemLPS::extract(const char *str, int &dim)
 
 double BondPeridemLPS::memory_usage()
 {
-  return Bond::memory_usage() + lcache.capacity() * sizeof(LpsCache) +
-         current_length.capacity() * sizeof(double) + 4.0 * nmax_lps * sizeof(double);
+  return Bond::memory_usage() +
+         (lcache.r0.capacity() + lcache.k.capacity() + lcache.wi.capacity() +
+          lcache.wj.capacity()) *
+             sizeof(double) +
+         pieces_memory() + current_length.capacity() * sizeof(double) +
+         4.0 * nmax_lps * sizeof(double);
 }

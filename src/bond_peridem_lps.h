@@ -56,13 +56,17 @@ class BondPeridemLPS : public BondPeridem {
   peridem::LpsPlane plane;
   double dfac; // d of theta = (d/m) sum omega beta r e V
 
+  // per entry of the bond list, one array per quantity: the dilation pass streams r0, wi and
+  // wj, the force pass k and r0 (an array of 32-byte structs made both passes read all four:
+  // 64 bytes per bond per step against 40)
   struct LpsCache {
-    double r0; // reference length
-    double k;  // omega beta V_i V_j
-    double wi; // omega beta r0 V_j: weight of the extension in theta_i
-    double wj; // omega beta r0 V_i
+    std::vector<double> r0; // reference length
+    std::vector<double> k;  // omega beta V_i V_j
+    std::vector<double> wi; // omega beta r0 V_j: weight of the extension in theta_i
+    std::vector<double> wj; // omega beta r0 V_i
+    std::size_t size() const { return r0.size(); }
   };
-  std::vector<LpsCache> lcache;
+  LpsCache lcache;
   std::vector<double> current_length; // |y| of each bond, from the dilation pass
   void fill_lps_cache();
 
@@ -77,8 +81,8 @@ class BondPeridemLPS : public BondPeridem {
 
   // the passes of compute(): (1) the dilation sums, for 2d and 3d; (3) the forces, for 2d
   // and 3d on most steps, one bond at a time with energy, virial or break_order after_force
-  template <int DIM> void dilation_pass();
-  template <int DIM> void force_pass();
+  template <int DIM, bool ONE_TYPE> void dilation_pass();
+  template <int DIM, bool ONE_TYPE> void force_pass();
   void force_pass_one_by_one(int eflag);
 };
 

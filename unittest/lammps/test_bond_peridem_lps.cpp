@@ -31,7 +31,8 @@ namespace {
 constexpr double H = 1.0e-3; // lattice spacing
 
 // a block of n^dim nodes with bonds to every node within nh spacings
-std::string block(int dim, int n, double nh, const std::string &style, const std::string &coeff)
+std::string block(int dim, int n, double nh, const std::string &style, const std::string &coeff,
+                  int bond_types = 1)
 {
   const double eps = nh * H * (1.0 + 1e-6);
   const double vol = dim == 3 ? H * H * H : H * H;
@@ -40,14 +41,14 @@ std::string block(int dim, int n, double nh, const std::string &style, const std
                               dim, dim == 3 ? "s" : "p", dim == 3 ? "sc" : "sq", H);
   s += fmt::format("region b block 0 {} 0 {} {}\n", n - 1e-3, n - 1e-3,
                    dim == 3 ? fmt::format("0 {}", n - 1e-3) : std::string("-0.5 0.5"));
-  s += fmt::format("create_box 1 b bond/types 1 extra/bond/per/atom 300 "
+  s += fmt::format("create_box 1 b bond/types {} extra/bond/per/atom 300 "
                    "extra/special/per/atom 300\ncreate_atoms 1 region b\n"
                    "set type 1 mol 1\nset group all volume {}\nset group all mass {}\n"
                    "pair_style zero {}\npair_coeff * *\nspecial_bonds lj/coul 0.0 1.0 1.0\n"
-                   "bond_style {}\nbond_coeff 1 {} horizon {}\n"
+                   "bond_style {}\nbond_coeff * {} horizon {}\n"
                    "create_bonds many all all 1 0.0 {}\npair_style none\n"
                    "thermo_style custom step pe\nthermo_modify norm no\n",
-                   vol, 1000.0 * vol, eps * 1.01, style, coeff, eps, eps);
+                   bond_types, vol, 1000.0 * vol, eps * 1.01, style, coeff, eps, eps);
   return s;
 }
 
@@ -259,19 +260,28 @@ TEST_F(BondPeridemLPS, UnbreakableBondTypes)
 
 // The force pass of ordinary steps (no energy or virial; in 2d without z) gives the
 // same forces, to the bit, as the pass of energy steps, which takes one bond at a time with z
-// in every bond. Jittered and sheared 2d and 3d blocks with some bonds stretched past s0; the
-// forces come from calling the bond style directly.
+// in every bond. Jittered and sheared 2d and 3d blocks with some bonds stretched past s0, one
+// bond type or two (another K, G and s0 on the bonds between nodes with x below the middle);
+// the forces come from calling the bond style directly.
 TEST_F(BondPeridemLPS, PlainForcePassEqualsOneByOne)
 {
-  for (const int dim : {2, 3}) {
-    auto forces = [&](int eflag) {
-      TearDown();
-      SetUp();
-      command(block(dim, dim == 2 ? 10 : 6, 3.0, "peridem/lps", "K 2e9 G 1e9 s0 2e-3"));
-      command("run 0 post no");
-      return bond_loop_check::forces_after_shear(lmp, dim, H, eflag);
-    };
-    const auto one = forces(1), plain = forces(0);
-    bond_loop_check::expect_same_bits(one, plain, dim, "lps");
-  }
+  for (const int types : {1, 2})
+    for (const int dim : {2, 3}) {
+      auto forces = [&](int eflag) {
+        TearDown();
+        SetUp();
+        const int n = dim == 2 ? 10 : 6;
+        command(block(dim, n, 3.0, "peridem/lps", "K 2e9 G 1e9 s0 2e-3", types));
+        if (types == 2) {
+          command(
+              fmt::format("bond_coeff 2 K 3e9 G 1.5e9 s0 3e-3 horizon {}", 3.0 * H * (1.0 + 1e-6)));
+          command(fmt::format("region left block INF {} INF INF INF INF units box", n * H / 2));
+          command("group left region left\nset group left bond 2");
+        }
+        command("run 0 post no");
+        return bond_loop_check::forces_after_shear(lmp, dim, H, eflag);
+      };
+      const auto one = forces(1), plain = forces(0);
+      bond_loop_check::expect_same_bits(one, plain, dim, types == 1 ? "lps" : "lps, two types");
+    }
 }
