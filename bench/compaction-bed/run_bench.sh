@@ -73,27 +73,40 @@ echo "peri/pmb yardstick (in.peri.pmb, 1 rank, CPU time): $(python3 -c "print(f'
 echo
 echo "| build | grains | bond style | ranks | nodes | bonds | ms/step (wall, best) | ms/step (CPU) | node-steps/s (wall) | node-steps/s (CPU, per core) | bond updates/s | contact pairs/s | Bond % | Modify % | Neigh % | Pair % | Comm % | KiB/node | B/bond | node-steps/s per core, scaled |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+# the beds first, then every repeat runs every bed, bond style, rank count and build in turn,
+# so that the machine's changes of speed (up to 50 % within minutes here) hit all alike
+builds=("$build")
+[ -n "$base" ] && builds+=("$(realpath "$base")")
 for n in "${grains[@]}"; do
   for b in $bonds_list; do
     mpirun -np 1 "$build/lmp_peridem" -in in.compaction -var potentials "$pot" -var ngrains "$n" \
       -var bond "$b" -var warmup "$warmup" -var restart "bed_${n}_$b.restart" -log "log.warm_${n}_$b" -screen none
-    for np in $ranks_list; do
-      builds=("$build")
-      [ -n "$base" ] && builds+=("$(realpath "$base")")
-      declare -A best=()
-      for _ in $(seq "$repeats"); do
+  done
+done
+declare -A best=()
+for _ in $(seq "$repeats"); do
+  for n in "${grains[@]}"; do
+    for b in $bonds_list; do
+      for np in $ranks_list; do
         for bd in "${builds[@]}"; do
           mpirun -np "$np" "$bd/lmp_peridem" -in in.timed -var potentials "$pot" -var steps "$steps" \
             -var restart "bed_${n}_$b.restart" "${timed_vars[@]}" -log log.t -screen none
           line=$(parse log.t)
-          if [ -z "${best[$bd]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$bd]%% *} else 1)"; then
-            best[$bd]="$line"
+          key="$n|$b|$np|$bd"
+          if [ -z "${best[$key]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$key]%% *} else 1)"; then
+            best[$key]="$line"
           fi
         done
       done
+    done
+  done
+done
+for n in "${grains[@]}"; do
+  for b in $bonds_list; do
+    for np in $ranks_list; do
       for bd in "${builds[@]}"; do
         name=$([ "$bd" = "$build" ] && echo this || echo base)
-        python3 - "$name" "$n" "$b" "$np" "$steps" "$stock_best" ${best[$bd]} <<'PY'
+        python3 - "$name" "$n" "$b" "$np" "$steps" "$stock_best" ${best["$n|$b|$np|$bd"]} <<'PY'
 import sys
 name, n, b, np_, steps, stock = sys.argv[1:7]
 loop, cpu, pair, bond, neigh, comm, mod, nb, nat, nbond, mem = map(float, sys.argv[7:])
@@ -111,7 +124,31 @@ print(f"| {name} | {n} | {b} | {np_} | {int(nat):,} | {int(nbond):,} | {per*1e3:
       f"{share(mod):.1f} | {share(neigh):.1f} | {share(pair):.1f} | {share(comm):.1f} | {kib:.1f} | {bpb:.0f} | {scaled:.3g} |")
 PY
       done
-      unset best
     done
   done
 done
+# cost per node-step against the size of the bed (wall time, best of the repeats)
+if [ ${#grains[@]} -gt 1 ]; then
+  echo
+  for b in $bonds_list; do
+    for np in $ranks_list; do
+      for bd in "${builds[@]}"; do
+        name=$([ "$bd" = "$build" ] && echo this || echo base)
+        args=()
+        for n in "${grains[@]}"; do args+=("$n" ${best["$n|$b|$np|$bd"]}); done
+        python3 - "$name" "$b" "$np" "$steps" "${args[@]}" <<'PY'
+import sys
+name, b, np_, steps = sys.argv[1:5]
+rest = sys.argv[5:]
+cost = []
+for k in range(0, len(rest), 12):
+    n, loop, nat = rest[k], float(rest[k + 1]), float(rest[k + 9])
+    cost.append((n, loop / int(steps) / nat * 1e9))
+line = ", ".join(f"{c:.1f} ({n} grains)" for n, c in cost)
+print(f"{name}, {b}, {np_} rank(s): ns per node-step {line}; largest / smallest bed "
+      f"{cost[-1][1] / cost[0][1]:.2f}x")
+PY
+      done
+    done
+  done
+fi
