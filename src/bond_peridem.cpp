@@ -53,7 +53,7 @@ BondPeridem::BondPeridem(LAMMPS *lmp)
     : Bond(lmp), c(nullptr), s0(nullptr), horizon(nullptr), spacing(nullptr), conic(nullptr),
       breakable(nullptr), breakage(peridem::BreakageMode::Tension), break_flag(1),
       break_after_force(0), volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr),
-      cache_ncalls(-1), cache_bondlist(nullptr)
+      cache_ncalls(-1), cache_generation(-1), cache_bondlist(nullptr)
 {
   peridem_lmp::cite_grain_shape(lmp);
   writedata = 1;
@@ -104,9 +104,7 @@ void BondPeridem::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (validate_next) validate_bonds();
-  if (neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(cache.size()) ||
-      neighbor->bondlist != cache_bondlist)
-    fill_cache();
+  if (bond_list_is_new(cache.size())) fill_cache();
   if (neighbor->nbondlist == 0) return;
   // steps with energy or virial, and LAMMPS's break order, go one bond at a
   // time; the others in chunks (the same forces, to the bit)
@@ -127,7 +125,7 @@ void BondPeridem::compute(int eflag, int vflag)
    order, summing those on i1 in registers while i1 repeats. LAMMPS lists the
    bonds of one atom one after the other, so the loop reads the list as
    pieces with one i1 each (fill_pieces): per entry it streams i2 and 1/r0 only
-   (12 bytes, and the stiffness k when the bonds have different ones; LAMMPS's list
+   (12 bytes; and k when the bonds' stiffnesses differ, the type when their types do; LAMMPS's list
    entry is 12 bytes on its own), and x1 once per piece. Each force is the same
    expression as in compute_one_by_one(), so the results are the same to
    the bit (tested: chunked_equals_one_by_one).
@@ -177,7 +175,9 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
       }
     }
     // (b) no branches: vectorised. An entry with r = 0 (coinciding nodes, or a broken entry,
-    // whose partner is i1) gets an infinite or undefined fb here, and no force in (c)
+    // whose partner is i1) gets an infinite or undefined fb here, and no force in (c); so
+    // this pass raises the divide-by-zero and invalid flags whenever a bond has broken (a
+    // run with floating-point traps, feenableexcept, stops here)
     const double *ir = inv_r0 + n0, *kk = UNIFORM_K ? nullptr : kb + n0;
     for (int j = 0; j < m; j++) {
       const double rsq =
@@ -318,14 +318,30 @@ inline double BondPeridem::stiffness(int type, double r0, double vol1, double vo
   return peridem::bond_force(c[type], w, 1.0, vol1, vol2 * vscale);
 }
 
+// LAMMPS rebuilt the bond list since the caches were filled: fix peridem/bonds counts the
+// rebuilds (neighbor->ncalls alone returns to 0 at every setup, and rerun sets up every
+// snapshot without a new init)
+bool BondPeridem::bond_list_is_new(std::size_t cached_entries) const
+{
+  return bonds_fix->bond_list_generation() != cache_generation ||
+         neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(cached_entries) ||
+         neighbor->bondlist != cache_bondlist;
+}
+
+void BondPeridem::remember_bond_list()
+{
+  cache_generation = bonds_fix->bond_list_generation();
+  cache_ncalls = neighbor->ncalls;
+  cache_bondlist = neighbor->bondlist;
+}
+
 void BondPeridem::fill_cache()
 {
   // once per rebuild of the bond list (41 times in in.peri_impact's 1000 steps): a tight
   // loop over flat arrays, 4.5 % of that run's samples before (session 7)
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
-  cache_ncalls = neighbor->ncalls;
-  cache_bondlist = bondlist;
+  remember_bond_list();
   if (nbondlist == 0) { // the bond list and x0 may not exist yet on this rank
     cache.r0.clear();
     cache.inv_r0.clear();
@@ -442,7 +458,8 @@ void BondPeridem::fill_pieces()
 void BondPeridem::break_bond(int n, int i1, int i2, double r0, double s0type)
 {
   neighbor->bondlist[n][2] = 0;
-  // the chunked loop's copy of the list (bond_style peridem's cache; peridem/lps has its own)
+  // the list by pieces, which both bond styles read (fill_pieces()): partner i1 marks the
+  // entry broken (after a fill, partner has one entry per entry of the bond list)
   if (std::size_t(n) < cache.partner.size()) cache.partner[n] = i1;
   double **x = atom->x;
   double dy[3];
@@ -783,7 +800,7 @@ void BondPeridem::init_style()
   if (!bonds_fix)
     error->all(FLERR, "{}: fix {} is not a fix peridem/bonds", STYLE, FixPeridemBonds::ID);
   validate_next = 1;
-  cache_ncalls = -1;
+  cache_ncalls = cache_generation = -1;
 }
 
 /* ---------------------------------------------------------------------- */

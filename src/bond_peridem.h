@@ -120,8 +120,11 @@ class BondPeridem : public Bond {
   };
   BondCache cache;
   static constexpr int CHUNK = 64; // entries per chunk of the chunked loop
-  bigint cache_ncalls;
+  // the bond list the caches were filled for (bond_list_is_new())
+  bigint cache_ncalls, cache_generation;
   int **cache_bondlist;
+  bool bond_list_is_new(std::size_t cached_entries) const;
+  void remember_bond_list();
   void fill_cache();
   void compute_one_by_one(int eflag);
   void compute_chunked();

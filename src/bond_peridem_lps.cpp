@@ -129,8 +129,7 @@ void BondPeridemLPS::fill_lps_cache()
     lcache.wi[n] = w * beta * r0 * vfrac[i2];
     lcache.wj[n] = w * beta * r0 * vfrac[i1];
   }
-  cache_ncalls = neighbor->ncalls;
-  cache_bondlist = bondlist;
+  remember_bond_list();
   // the bond list by pieces with one i1, as bond_style peridem's loop reads it
   fill_pieces();
 }
@@ -176,9 +175,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   if (validate_next) validate_bonds();
-  if (neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(lcache.size()) ||
-      neighbor->bondlist != cache_bondlist)
-    fill_lps_cache();
+  if (bond_list_is_new(lcache.size())) fill_lps_cache();
   grow_lps();
   if (check_wvolume) compute_weighted_volume();
 
@@ -245,8 +242,9 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
   double acc = 0.0;
   for (int p = 0; p < npieces; p++) {
     const int i1 = piece_atom[p];
-    // the sums of the previous i1 are complete: no entry between them and this piece adds
-    // anything (the same order of additions as one entry at a time)
+    // the sums of the previous i1 are complete: LAMMPS lists the bonds of one i1 in one
+    // run, so only pieces of one i1 follow each other (the same additions, in the same order,
+    // as one entry at a time; a piece whose entries all broke adds 0 to its i1)
     if (i1 != current) {
       if (current >= 0) sum[current] += acc;
       current = i1;

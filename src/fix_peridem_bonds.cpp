@@ -78,7 +78,8 @@ FixPeridemBonds::~FixPeridemBonds()
 
 int FixPeridemBonds::setmask()
 {
-  return PRE_EXCHANGE | PRE_FORCE | POST_FORCE | MIN_PRE_FORCE | MIN_POST_FORCE;
+  return PRE_EXCHANGE | POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_FORCE | POST_FORCE | MIN_PRE_FORCE |
+         MIN_POST_FORCE;
 }
 
 void FixPeridemBonds::init()

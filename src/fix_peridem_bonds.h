@@ -51,6 +51,13 @@ class FixPeridemBonds : public Fix {
   void min_post_force(int) override;
   void setup_pre_exchange() override;
   void pre_exchange() override;
+  // LAMMPS rebuilt its neighbour and bond lists: at every setup (also of each snapshot of
+  // rerun, which resets neighbor->ncalls to 0 each time), every reneighbouring of a run and
+  // of a minimisation. The bond styles refill their per-entry caches when this changes.
+  void setup_post_neighbor() override { list_generation++; }
+  void post_neighbor() override { list_generation++; }
+  void min_post_neighbor() override { list_generation++; }
+  bigint bond_list_generation() const { return list_generation; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -123,6 +130,7 @@ class FixPeridemBonds : public Fix {
   void collect();
   static void remove_bond(class Atom *atom, int i, tagint partner);
   bigint stamp = 0;
+  bigint list_generation = 0; // bond_list_generation()
 };
 
 } // namespace LAMMPS_NS

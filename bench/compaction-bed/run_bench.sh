@@ -26,9 +26,11 @@
 #   PERIDEM_BENCH_WARMUP=1000 (steps of the warm-up, once per bed),
 #   PERIDEM_BENCH_BASE=/work/main/build (previous build, side by side),
 #   PERIDEM_BENCH_VARS="-var balance no -var g 0" (more -var settings of in.timed)
-# Cost against the number of grains:
+# Cost against the number of grains (also printed as ns per node-step and the ratio of the
+# largest bed's to the smallest's):
 #   PERIDEM_BENCH_RANKS=1 PERIDEM_BENCH_BONDS=peridem PERIDEM_BENCH_WARMUP=300 \
-#     bench/compaction-bed/run_bench.sh build 3 100 50 200 500 2000
+#     bench/compaction-bed/run_bench.sh build 5 100 50 200 500 1000 2000
+# Every repeat runs the yardstick and every case once, in turn (best of the repeats each).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$(realpath "${1:-$here/build}")"
@@ -61,20 +63,17 @@ parse() {
        END {print loop, c/100, pair+0, bond+0, neigh+0, comm+0, mod+0, nb+0, nat, nbond+0, mem}' "$1"
 }
 
-# the yardstick (CPU time), best of $repeats
+# the yardstick (CPU time), once in every repeat (below), best of $repeats
 stock_best=1e30
-for _ in $(seq "$repeats"); do
+run_stock() {
   mpirun -np 1 "$build/lmp_peridem" -in in.stock -log log.stock -screen none
   t=$(awk '/^Loop time of/ {l=$4} /% CPU use/ {c=$1} END {print l * c / 100}' log.stock) # CPU time
   stock_best=$(python3 -c "print(min($stock_best, $t))")
-done
+}
 
-echo "peri/pmb yardstick (in.peri.pmb, 1 rank, CPU time): $(python3 -c "print(f'{$stock_best:.3f} ms/step (session 2, idle: 7.15)')")"
-echo
-echo "| build | grains | bond style | ranks | nodes | bonds | ms/step (wall, best) | ms/step (CPU) | node-steps/s (wall) | node-steps/s (CPU, per core) | bond updates/s | contact pairs/s | Bond % | Modify % | Neigh % | Pair % | Comm % | KiB/node | B/bond | node-steps/s per core, scaled |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-# the beds first, then every repeat runs every bed, bond style, rank count and build in turn,
-# so that the machine's changes of speed (up to 50 % within minutes here) hit all alike
+# the beds first; then every repeat runs the yardstick and every bed, bond style, rank count
+# and build in turn, so that the machine's changes of speed (up to 50 % within minutes here)
+# hit all alike
 builds=("$build")
 [ -n "$base" ] && builds+=("$(realpath "$base")")
 for n in "${grains[@]}"; do
@@ -85,6 +84,7 @@ for n in "${grains[@]}"; do
 done
 declare -A best=()
 for _ in $(seq "$repeats"); do
+  run_stock
   for n in "${grains[@]}"; do
     for b in $bonds_list; do
       for np in $ranks_list; do
@@ -101,6 +101,10 @@ for _ in $(seq "$repeats"); do
     done
   done
 done
+echo "peri/pmb yardstick (in.peri.pmb, 1 rank, CPU time, best of one run per repeat): $(python3 -c "print(f'{$stock_best:.3f} ms/step (session 2, idle: 7.15)')")"
+echo
+echo "| build | grains | bond style | ranks | nodes | bonds | ms/step (wall, best) | ms/step (CPU) | node-steps/s (wall) | node-steps/s (CPU, per core) | bond updates/s | contact pairs/s | Bond % | Modify % | Neigh % | Pair % | Comm % | KiB/node | B/bond | node-steps/s per core, scaled |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in "${grains[@]}"; do
   for b in $bonds_list; do
     for np in $ranks_list; do

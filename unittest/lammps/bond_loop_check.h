@@ -39,10 +39,14 @@ struct BondForces {
 // without rebuilding the bond list: the second call meets the entries broken in the first
 // (the forces are those of the second call, which takes back most of the first shear, so
 // that a broken entry taken for intact would pull)
-inline BondForces forces_after_shear(LAMMPS_NS::LAMMPS *lmp, int dim, double h, int eflag)
+// eflag_second (default: eflag) for the second call: an energy step, which breaks bonds one
+// at a time, followed by an ordinary one
+inline BondForces forces_after_shear(LAMMPS_NS::LAMMPS *lmp, int dim, double h, int eflag,
+                                     int eflag_second = -1)
 {
   LAMMPS_NS::Atom *atom = lmp->atom;
   for (const double amount : {1.0, -0.9}) {
+    if (amount < 0.0 && eflag_second >= 0) eflag = eflag_second;
     for (int i = 0; i < atom->nlocal; i++) {
       const double t = atom->tag[i];
       atom->x[i][0] += amount * (2e-3 * h * std::sin(0.7 * t) + 1e-3 * atom->x[i][1]);

@@ -19,7 +19,9 @@
 #include "bond_loop_check.h"
 #include "lammps.h"
 #include "library.h"
+#include "neighbor.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -261,27 +263,42 @@ TEST_F(BondPeridemLPS, UnbreakableBondTypes)
 // The force pass of ordinary steps (no energy or virial; in 2d without z) gives the
 // same forces, to the bit, as the pass of energy steps, which takes one bond at a time with z
 // in every bond. Jittered and sheared 2d and 3d blocks with some bonds stretched past s0, one
-// bond type or two (another K, G and s0 on the bonds between nodes with x below the middle);
-// the forces come from calling the bond style directly.
+// bond type or two (another K, G and s0 on the bonds between nodes with x below the middle),
+// and with horizon 4.5 h atoms with more bonds than bond_style peridem's chunk (64), which the
+// shared list of pieces splits; the forces come from calling the bond style directly.
 TEST_F(BondPeridemLPS, PlainForcePassEqualsOneByOne)
 {
-  for (const int types : {1, 2})
-    for (const int dim : {2, 3}) {
-      auto forces = [&](int eflag) {
-        TearDown();
-        SetUp();
-        const int n = dim == 2 ? 10 : 6;
-        command(block(dim, n, 3.0, "peridem/lps", "K 2e9 G 1e9 s0 2e-3", types));
-        if (types == 2) {
-          command(
-              fmt::format("bond_coeff 2 K 3e9 G 1.5e9 s0 3e-3 horizon {}", 3.0 * H * (1.0 + 1e-6)));
-          command(fmt::format("region left block INF {} INF INF INF INF units box", n * H / 2));
-          command("group left region left\nset group left bond 2");
+  for (const double nh : {3.0, 4.5})
+    for (const int types : {1, 2})
+      for (const int dim : {2, 3}) {
+        if (nh > 3.0 && types == 2) continue;
+        auto forces = [&](int eflag) {
+          TearDown();
+          SetUp();
+          const int n = dim == 2 ? 10 : 6;
+          command(block(dim, n, nh, "peridem/lps", "K 2e9 G 1e9 s0 2e-3", types));
+          if (types == 2) {
+            command(fmt::format("bond_coeff 2 K 3e9 G 1.5e9 s0 3e-3 horizon {}",
+                                nh * H * (1.0 + 1e-6)));
+            command(fmt::format("region left block INF {} INF INF INF INF units box", n * H / 2));
+            command("group left region left\nset group left bond 2");
+          }
+          command("run 0 post no");
+          return bond_loop_check::forces_after_shear(lmp, dim, H, eflag);
+        };
+        const auto one = forces(1), plain = forces(0);
+        bond_loop_check::expect_same_bits(one, plain, dim,
+                                          nh > 3.0     ? "lps, long runs"
+                                          : types == 1 ? "lps"
+                                                       : "lps, two types");
+        if (nh > 3.0 && dim == 3) {
+          int longest = 0, run = 0;
+          const int *const *bl = lmp->neighbor->bondlist;
+          for (int k = 0; k < lmp->neighbor->nbondlist; k++) {
+            run = (k > 0 && bl[k][0] == bl[k - 1][0]) ? run + 1 : 1;
+            longest = std::max(longest, run);
+          }
+          EXPECT_GT(longest, 64);
         }
-        command("run 0 post no");
-        return bond_loop_check::forces_after_shear(lmp, dim, H, eflag);
-      };
-      const auto one = forces(1), plain = forces(0);
-      bond_loop_check::expect_same_bits(one, plain, dim, types == 1 ? "lps" : "lps, two types");
-    }
+      }
 }

@@ -40,4 +40,7 @@ set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -We
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp APPEND PROPERTY COMPILE_OPTIONS
     -fno-math-errno -ftree-vectorize -ffp-contract=off)
+  # bond_peridem_lps.cpp's fast force pass must give its one-by-one pass's bits too
+  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_lps.cpp APPEND PROPERTY
+    COMPILE_OPTIONS -ffp-contract=off)
 endif()
