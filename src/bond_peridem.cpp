@@ -125,8 +125,8 @@ void BondPeridem::compute(int eflag, int vflag)
    order, summing those on i1 in registers while i1 repeats. LAMMPS lists the
    bonds of one atom one after the other, so the loop reads the list as
    pieces with one i1 each (fill_pieces): per entry it streams i2 and 1/r0 only
-   (12 bytes; and k when the bonds' stiffnesses differ, the type when their types do; LAMMPS's list
-   entry is 12 bytes on its own), and x1 once per piece. Each force is the same
+   (12 bytes; and k when the bonds' stiffnesses differ, the type when their types do;
+   LAMMPS's list entry is 12 bytes on its own), and x1 once per piece. Each force is the same
    expression as in compute_one_by_one(), so the results are the same to
    the bit (tested: chunked_equals_one_by_one).
 ------------------------------------------------------------------------- */

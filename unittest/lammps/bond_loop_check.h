@@ -65,6 +65,19 @@ inline BondForces forces_after_shear(LAMMPS_NS::LAMMPS *lmp, int dim, double h, 
   return r;
 }
 
+// the longest run of entries with one i1 in LAMMPS's bond list (the fast loops take runs
+// longer than their chunk of 64 entries in pieces)
+inline int longest_run(LAMMPS_NS::LAMMPS *lmp)
+{
+  int longest = 0, run = 0;
+  const int *const *bl = lmp->neighbor->bondlist;
+  for (int k = 0; k < lmp->neighbor->nbondlist; k++) {
+    run = (k > 0 && bl[k][0] == bl[k - 1][0]) ? run + 1 : 1;
+    longest = std::max(longest, run);
+  }
+  return longest;
+}
+
 // one bond at a time (eflag 1) against the fast loop (eflag 0): the same bits
 inline void expect_same_bits(const BondForces &one, const BondForces &fast, int dim,
                              const char *what)

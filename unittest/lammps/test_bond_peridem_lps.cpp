@@ -291,14 +291,6 @@ TEST_F(BondPeridemLPS, PlainForcePassEqualsOneByOne)
                                           nh > 3.0     ? "lps, long runs"
                                           : types == 1 ? "lps"
                                                        : "lps, two types");
-        if (nh > 3.0 && dim == 3) {
-          int longest = 0, run = 0;
-          const int *const *bl = lmp->neighbor->bondlist;
-          for (int k = 0; k < lmp->neighbor->nbondlist; k++) {
-            run = (k > 0 && bl[k][0] == bl[k - 1][0]) ? run + 1 : 1;
-            longest = std::max(longest, run);
-          }
-          EXPECT_GT(longest, 64);
-        }
+        if (nh > 3.0 && dim == 3) EXPECT_GT(bond_loop_check::longest_run(lmp), 64);
       }
 }
