@@ -148,26 +148,21 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
   const double *inv_r0 = cache.inv_r0.data();
   const double *kb = cache.k.data();
   const double k_all = cache.k_value;
-  const int *partner = cache.partner.data();
-  const int *piece_atom = cache.piece_atom.data(), *piece_start = cache.piece_start.data();
-  const int *chunk_piece = cache.chunk_piece.data();
-  const int nchunks = int(cache.chunk_piece.size()) - 1;
-  const int *types = cache.type.data();
-  const int type_all = cache.type_all;
+  const PieceView pc = pieces();
 
   alignas(64) double dx[CHUNK], dy[CHUNK], dz[CHUNK], rv[CHUNK], sv[CHUNK], fb[CHUNK];
   int current = -1;
   double fsum[3] = {0.0, 0.0, 0.0};
 
-  for (int c = 0; c < nchunks; c++) {
-    const int p0 = chunk_piece[c], p1 = chunk_piece[c + 1];
-    const int n0 = piece_start[p0], m = piece_start[p1] - n0;
+  for (int c = 0; c < pc.nchunks; c++) {
+    const int p0 = pc.chunk[c], p1 = pc.chunk[c + 1];
+    const int n0 = pc.start[p0], m = pc.start[p1] - n0;
     // (a) gather, x1 once per piece
     for (int p = p0; p < p1; p++) {
-      const double *x1 = x + 3 * piece_atom[p];
+      const double *x1 = x + 3 * pc.atom[p];
       const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
-      for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
-        const double *x2 = x + 3 * partner[n];
+      for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
+        const double *x2 = x + 3 * pc.partner[n];
         const int j = n - n0;
         dx[j] = x10 - x2[0];
         dy[j] = x11 - x2[1];
@@ -189,11 +184,11 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
     }
     // (c) forces in list order
     for (int p = p0; p < p1; p++) {
-      const int i1 = piece_atom[p];
-      for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
-        const int i2 = partner[n];
+      const int i1 = pc.atom[p];
+      for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
+        const int i2 = pc.partner[n];
         if (i2 == i1) continue; // broken
-        const int type = ONE_TYPE ? type_all : types[n];
+        const int type = pc.type_of<ONE_TYPE>(n);
         const int j = n - n0;
         if (break_flag && peridem::bond_breaks(sv[j], s0_break[type], breakage)) {
           break_bond(n, i1, i2, cache.r0[n], s0[type]);

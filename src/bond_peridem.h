@@ -120,6 +120,27 @@ class BondPeridem : public Bond {
   };
   BondCache cache;
   static constexpr int CHUNK = 64; // entries per chunk of the chunked loop
+  // the pieces of the bond list as the piece loops read them, taken once per pass
+  struct PieceView {
+    const int *partner;      // BondCache::partner
+    const int *atom, *start; // BondCache::piece_atom, piece_start
+    const int *chunk;        // BondCache::chunk_piece
+    const int *type;         // BondCache::type (empty when type_all > 0)
+    int npieces, nchunks, type_all;
+    // the type of intact entry n: ONE_TYPE when type_all > 0
+    template <bool ONE_TYPE> int type_of(int n) const { return ONE_TYPE ? type_all : type[n]; }
+  };
+  PieceView pieces() const
+  {
+    return {cache.partner.data(),
+            cache.piece_atom.data(),
+            cache.piece_start.data(),
+            cache.chunk_piece.data(),
+            cache.type.data(),
+            int(cache.piece_atom.size()),
+            int(cache.chunk_piece.size()) - 1,
+            cache.type_all};
+  }
   // the bond list the caches were filled for (bond_list_is_new())
   bigint cache_ncalls, cache_generation;
   int **cache_bondlist;

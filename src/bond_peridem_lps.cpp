@@ -233,15 +233,12 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
   const double *x = atom->x[0];
   const double *r0c = lcache.r0.data(), *wic = lcache.wi.data(), *wjc = lcache.wj.data();
   double *len = current_length.data();
-  const int *partner = cache.partner.data(), *types = cache.type.data();
-  const int *piece_atom = cache.piece_atom.data(), *piece_start = cache.piece_start.data();
-  const int npieces = int(cache.piece_atom.size());
-  const int type_all = cache.type_all;
+  const PieceView pc = pieces();
 
   int current = -1;
   double acc = 0.0;
-  for (int p = 0; p < npieces; p++) {
-    const int i1 = piece_atom[p];
+  for (int p = 0; p < pc.npieces; p++) {
+    const int i1 = pc.atom[p];
     // the sums of the previous i1 are complete: LAMMPS lists the bonds of one i1 in one
     // run, so only pieces of one i1 follow each other (the same additions, in the same order,
     // as one entry at a time; a piece whose entries all broke adds 0 to its i1)
@@ -252,10 +249,10 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
     }
     const double *x1 = x + 3 * i1;
     const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
-    for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
-      const int i2 = partner[n];
+    for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
+      const int i2 = pc.partner[n];
       if (i2 == i1) continue; // broken
-      const int type = ONE_TYPE ? type_all : types[n];
+      const int type = pc.type_of<ONE_TYPE>(n);
       const double *x2 = x + 3 * i2;
       const double delx = x10 - x2[0], dely = x11 - x2[1];
       double rsq = delx * delx + dely * dely;
@@ -296,22 +293,19 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
   const double *r0c = lcache.r0.data(), *kc = lcache.k.data();
   const double *len = current_length.data();
   const peridem::LpsConstants *lc = constants.data();
-  const int *partner = cache.partner.data(), *types = cache.type.data();
-  const int *piece_atom = cache.piece_atom.data(), *piece_start = cache.piece_start.data();
-  const int npieces = int(cache.piece_atom.size());
-  const int type_all = cache.type_all;
+  const PieceView pc = pieces();
 
   int current = -1;
   double fsum[3] = {0.0, 0.0, 0.0};
-  for (int p = 0; p < npieces; p++) {
-    const int i1 = piece_atom[p];
+  for (int p = 0; p < pc.npieces; p++) {
+    const int i1 = pc.atom[p];
     const double *x1 = x + 3 * i1;
     const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
     const double tm1 = theta_over_m[i1], im1 = inv_m[i1];
-    for (int n = piece_start[p], e = piece_start[p + 1]; n < e; n++) {
-      const int i2 = partner[n];
+    for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
+      const int i2 = pc.partner[n];
       if (i2 == i1) continue; // broken
-      const int type = ONE_TYPE ? type_all : types[n];
+      const int type = pc.type_of<ONE_TYPE>(n);
       const double *x2 = x + 3 * i2;
       const double r = len[n];
       const double F = peridem::lps_bond_force(lc[type], kc[n], r0c[n], r - r0c[n], tm1,

@@ -57,6 +57,20 @@ int family_bound(int dimension, double m)
   return static_cast<int>(dimension == 2 ? M_PI * r * r : 4.0 / 3.0 * M_PI * r * r * r) + 8;
 }
 
+// the tail both blocks below share: node volume h^dim and density 1000, no pair forces,
+// bonded pairs left out of the neighbour list, the bond style and its coefficients (whole
+// commands), and a bond between every two nodes within the horizon
+std::string bonded_lattice_nodes(int dim, double h, double horizon, const std::string &bond_style,
+                                 const std::string &bond_coeff)
+{
+  return fmt::format("set type 1 mol 1\nset type 1 volume {v}\nset type 1 mass {m}\n"
+                     "pair_style zero {cut}\npair_coeff * *\nspecial_bonds lj/coul 0.0 1.0 1.0\n"
+                     "{style}\n{coeff}\ncreate_bonds many all all 1 0.0 {eps}\n",
+                     fmt::arg("v", std::pow(h, dim)), fmt::arg("m", 1000.0 * std::pow(h, dim)),
+                     fmt::arg("cut", 1.2 * horizon), fmt::arg("style", bond_style),
+                     fmt::arg("coeff", bond_coeff), fmt::arg("eps", horizon));
+}
+
 // A jittered lattice block forming one grain, with peridynamic bonds.
 // `style_args` follow "bond_style peridem", `coeff` follows "bond_coeff 1".
 std::string grain_block(int dimension, int n, double h, double horizon,
@@ -64,24 +78,22 @@ std::string grain_block(int dimension, int n, double h, double horizon,
 {
   const std::string zspan = dimension == 2 ? "-0.5 0.5" : fmt::format("0 {}", n);
   return fmt::format(
-      "units si\ndimension {dim}\nboundary f f {zb}\natom_style peridem\natom_modify map array\n"
-      "lattice {lat} {h}\nregion box block -2 {m} -2 {m} {zbox} units lattice\n"
-      "create_box 1 box bond/types {nbt} extra/bond/per/atom {nb} extra/special/per/atom {nb}\n"
-      "region grain block 0 {n1} 0 {n1} {zspan} units lattice\ncreate_atoms 1 region grain\n"
-      "set type 1 mol 1\nset type 1 volume {vol}\nset type 1 mass {mass}\n"
-      "pair_style zero {cut}\npair_coeff * *\nspecial_bonds lj/coul 0.0 1.0 1.0\n"
-      "bond_style peridem {style}\nbond_coeff * {coeff}\n"
-      "create_bonds many all all 1 0.0 {horizon}\n"
-      "thermo_style custom step ke ebond etotal\nthermo_modify norm no\n",
-      fmt::arg("dim", dimension), fmt::arg("zb", dimension == 2 ? "p" : "f"),
-      fmt::arg("lat", dimension == 2 ? "sq" : "sc"), fmt::arg("h", h), fmt::arg("m", n + 2),
-      fmt::arg("zbox", dimension == 2 ? "-0.5 0.5" : fmt::format("-2 {}", n + 2)),
-      fmt::arg("n1", n - 0.5),
-      fmt::arg("zspan", dimension == 2 ? zspan : fmt::format("0 {}", n - 0.5)),
-      fmt::arg("vol", std::pow(h, dimension)), fmt::arg("mass", 1000.0 * std::pow(h, dimension)),
-      fmt::arg("cut", 1.2 * horizon), fmt::arg("style", style_args), fmt::arg("coeff", coeff),
-      fmt::arg("horizon", horizon), fmt::arg("nb", family_bound(dimension, horizon / h)),
-      fmt::arg("nbt", bond_types));
+             "units si\ndimension {dim}\nboundary f f {zb}\natom_style peridem\natom_modify map "
+             "array\n"
+             "lattice {lat} {h}\nregion box block -2 {m} -2 {m} {zbox} units lattice\n"
+             "create_box 1 box bond/types {nbt} extra/bond/per/atom {nb} extra/special/per/atom "
+             "{nb}\n"
+             "region grain block 0 {n1} 0 {n1} {zspan} units lattice\ncreate_atoms 1 region "
+             "grain\n",
+             fmt::arg("dim", dimension), fmt::arg("zb", dimension == 2 ? "p" : "f"),
+             fmt::arg("lat", dimension == 2 ? "sq" : "sc"), fmt::arg("h", h), fmt::arg("m", n + 2),
+             fmt::arg("zbox", dimension == 2 ? "-0.5 0.5" : fmt::format("-2 {}", n + 2)),
+             fmt::arg("n1", n - 0.5),
+             fmt::arg("zspan", dimension == 2 ? zspan : fmt::format("0 {}", n - 0.5)),
+             fmt::arg("nb", family_bound(dimension, horizon / h)), fmt::arg("nbt", bond_types)) +
+         bonded_lattice_nodes(dimension, h, horizon, "bond_style peridem " + style_args,
+                              "bond_coeff * " + coeff) +
+         "thermo_style custom step ke ebond etotal\nthermo_modify norm no\n";
 }
 
 // a periodic block of n^dim lattice nodes filling the box, bonds across the boundaries
@@ -89,20 +101,17 @@ std::string periodic_block(int dim, int n, double h, double horizon, const std::
                            const std::string &coeff, const std::string &newton = "on")
 {
   return fmt::format(
-      "units si\ndimension {dim}\nboundary p p p\nnewton {newton}\natom_style peridem\n"
-      "atom_modify map array\nlattice {lat} {h}\n"
-      "region box block 0 {n} 0 {n} {zspan} units lattice\n"
-      "create_box 1 box bond/types 1 extra/bond/per/atom {nb} extra/special/per/atom {nb}\n"
-      "create_atoms 1 box\nset type 1 mol 1\nset type 1 volume {v}\nset type 1 mass {m}\n"
-      "pair_style zero {cut}\npair_coeff * *\nspecial_bonds lj/coul 0.0 1.0 1.0\n"
-      "bond_style {style}\nbond_coeff 1 {coeff} horizon {eps}\n"
-      "create_bonds many all all 1 0.0 {eps}\n",
-      fmt::arg("dim", dim), fmt::arg("newton", newton), fmt::arg("lat", dim == 2 ? "sq" : "sc"),
-      fmt::arg("h", h), fmt::arg("n", n),
-      fmt::arg("zspan", dim == 2 ? std::string("-0.5 0.5") : fmt::format("0 {}", n)),
-      fmt::arg("nb", family_bound(dim, horizon / h)), fmt::arg("v", std::pow(h, dim)),
-      fmt::arg("m", 1000 * std::pow(h, dim)), fmt::arg("cut", 1.2 * horizon),
-      fmt::arg("style", style), fmt::arg("coeff", coeff), fmt::arg("eps", horizon));
+             "units si\ndimension {dim}\nboundary p p p\nnewton {newton}\natom_style peridem\n"
+             "atom_modify map array\nlattice {lat} {h}\n"
+             "region box block 0 {n} 0 {n} {zspan} units lattice\n"
+             "create_box 1 box bond/types 1 extra/bond/per/atom {nb} extra/special/per/atom {nb}\n"
+             "create_atoms 1 box\n",
+             fmt::arg("dim", dim), fmt::arg("newton", newton),
+             fmt::arg("lat", dim == 2 ? "sq" : "sc"), fmt::arg("h", h), fmt::arg("n", n),
+             fmt::arg("zspan", dim == 2 ? std::string("-0.5 0.5") : fmt::format("0 {}", n)),
+             fmt::arg("nb", family_bound(dim, horizon / h))) +
+         bonded_lattice_nodes(dim, h, horizon, "bond_style " + style,
+                              fmt::format("bond_coeff 1 {} horizon {}", coeff, horizon));
 }
 
 } // namespace
