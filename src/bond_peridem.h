@@ -120,6 +120,8 @@ class BondPeridem : public Bond {
   };
   BondCache cache;
   static constexpr int CHUNK = 64; // entries per chunk of the chunked loop
+  // atom->userbinsize while the nodes are ordered grain by grain (init_style)
+  static constexpr double NO_SPATIAL_SORT = 1e300;
   // the pieces of the bond list as the piece loops read them, taken once per pass
   struct PieceView {
     const int *partner;      // BondCache::partner

@@ -15,6 +15,7 @@
 #include "lmp_peridem_compat.h"
 
 #include "atom.h"
+#include "atom_vec.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -23,6 +24,7 @@
 #include "lmp_peridem_topology.h"
 #include "memory.h"
 #include "modify.h"
+#include "peridem_atom_order.h"
 #include "update.h"
 
 #include <algorithm>
@@ -113,10 +115,17 @@ void FixPeridemBonds::init()
 
 void FixPeridemBonds::setup_pre_exchange()
 {
-  pre_exchange();
+  check_escapes();
+  if (grain_order) order_atoms(); // at every setup, where LAMMPS would sort
 }
 
 void FixPeridemBonds::pre_exchange()
+{
+  check_escapes();
+  if (grain_order && update->ntimestep >= next_order) order_atoms();
+}
+
+void FixPeridemBonds::check_escapes()
 {
   if (escapes_deleted) return;
   double **x = atom->x;
@@ -131,6 +140,47 @@ void FixPeridemBonds::pre_exchange()
                "... lost delete)",
                atom->tag[i], atom->molecule[i], faces[face], x[i][0], x[i][1], x[i][2],
                update->ntimestep);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the local nodes in grain-major order (peridem_atom_order.h says why), at
+   the frequency of LAMMPS's sort (atom_modify sort N), which the bond
+   style turned off. Moved as Atom::sort() moves atoms: each cycle of the
+   permutation through a spare slot, with AtomVec::copy(), which also moves
+   the per-atom arrays of fixes. Unlike Atom::sort(), this runs before the
+   exchange, while the ghosts are still there: the spare slot lies after
+   them, and the map of atom IDs is set again for the new positions (a fix
+   called after this one in pre_exchange may look atoms up by ID).
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::order_atoms()
+{
+  const bigint every = atom->sortfreq;
+  if (every <= 0) return;
+  next_order = (update->ntimestep / every) * every + every;
+  const int nlocal = atom->nlocal;
+  const std::vector<int> perm = peridem::grain_major_permutation(atom->molecule, atom->tag, nlocal);
+  if (perm.empty()) return;
+
+  const int spare = nlocal + atom->nghost;
+  if (spare >= atom->nmax) atom->avec->grow(0);
+  std::vector<int> current(nlocal); // current[k]: the atom (old position) now at position k
+  for (int k = 0; k < nlocal; k++) current[k] = k;
+  for (int i = 0; i < nlocal; i++) {
+    if (current[i] == perm[i]) continue;
+    atom->avec->copy(i, spare, 0);
+    int empty = i;
+    while (perm[empty] != i) {
+      atom->avec->copy(perm[empty], empty, 0);
+      empty = current[empty] = perm[empty];
+    }
+    atom->avec->copy(spare, empty, 0);
+    current[empty] = perm[empty];
+  }
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_clear();
+    atom->map_set();
   }
 }
 

@@ -58,6 +58,9 @@ class FixPeridemBonds : public Fix {
   void post_neighbor() override { list_generation++; }
   void min_post_neighbor() override { list_generation++; }
   bigint bond_list_generation() const { return list_generation; }
+  // keep the local nodes in memory grain by grain (order_atoms) at LAMMPS's sort frequency,
+  // instead of LAMMPS's spatial sort (which the bond style then turns off)
+  void set_grain_order(bool on) { grain_order = on; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -124,6 +127,10 @@ class FixPeridemBonds : public Fix {
   double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()
 
   void forget_partner(int i, tagint partner);
+  void check_escapes();
+  void order_atoms();
+  bool grain_order = false; // set_grain_order()
+  bigint next_order = 0;    // the step from which pre_exchange() orders the nodes again
   void adopt_data_file_damage();
 
   void clear_ghosts();

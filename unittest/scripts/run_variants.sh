@@ -10,7 +10,8 @@
 # run_variants.sh LMP EXAMPLE_DIR INPUT OUT_DIR "COMMON ARGS" "NP [ARGS]"...
 # Runs the example once per variant (a rank count and more lmp arguments),
 # each in a fresh copy of the example directory, and requires the thermo
-# output of every run to equal that of the first (thermo_compare.py).
+# output of every run to equal that of the first (thermo_compare.py; more options of it in
+# PERIDEM_THERMO_COMPARE_ARGS).
 set -eu
 lmp="$(realpath "$1")"; src="$2"; input="$3"; out="$4"; read -r -a common <<< "$5"; shift 5
 source "$(dirname "$0")/mpi_env.sh"
@@ -29,4 +30,5 @@ for variant in "$@"; do
   echo "ran: np $variant"
   logs+=("$dir/log.lammps")
 done
-python3 "$here/thermo_compare.py" "${logs[@]}"
+read -r -a compare_args <<< "${PERIDEM_THERMO_COMPARE_ARGS:-}"
+python3 "$here/thermo_compare.py" "${compare_args[@]}" "${logs[@]}"

@@ -54,3 +54,8 @@ add_test(NAME bond_cohesive_allowed
 peridem_add_example_test(peri_impact peri-impact in.peri_impact 1 2)
 peridem_bond_error(user_bonds_fix bond_cases.data bond_user_fix.lmp
   "fix peridem/bonds is created by bond_style peridem \\(as fix PERIDEM_BONDS\\); do not define it yourself \\(fix mine\\)")
+
+# nodes kept grain by grain on 2 ranks: nodes migrate between the ranks, and are put in
+# order again at every reneighbouring, with ghosts present
+add_test(NAME mpi2.atom_order
+  COMMAND ${PERIDEM_RUN}/mpirun.sh 2 $<TARGET_FILE:test_atom_order>)

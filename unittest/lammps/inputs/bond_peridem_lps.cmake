@@ -67,7 +67,12 @@ add_test(NAME example.peri_lps_impact_ranks
           "-var radius 0.003 -var vy -20"
           "1" "2" "4" "2 -var newton off" "4 -var newton off"
           "2 -var restart 1" "2 -var restart 1 -var newton off")
-set_tests_properties(example.peri_lps_impact_ranks PROPERTIES TIMEOUT 600)
+# The shear virial c_vir[4] is zero by symmetry: its values (1e-12 against 0.1 for the
+# others) are round-off of sums over 1243 nodes, which the order of the nodes in memory
+# changes (ranks, restarts): an absolute floor of 1e-10, the relative tolerance (1e-9) of
+# the other virial components
+set_tests_properties(example.peri_lps_impact_ranks PROPERTIES TIMEOUT 600
+  ENVIRONMENT "PERIDEM_THERMO_COMPARE_ARGS=--atol 1e-10")
 
 # with create_peridem_grains, cut_peridem_bonds and pair_style peridem/contact
 # (2d, material M1, the paper's 3d constants): runs, the notch counts as
