@@ -25,6 +25,9 @@
 #   PERIDEM_BENCH_BONDS="peridem lps", PERIDEM_BENCH_RANKS="1 2",
 #   PERIDEM_BENCH_WARMUP=1000 (steps of the warm-up, once per bed),
 #   PERIDEM_BENCH_BASE=/work/main/build (previous build, side by side),
+#   PERIDEM_BENCH_BASE_VARS="-var sort_bin 0.115e-3" (more -var settings of in.timed for the
+#   base runs only; without PERIDEM_BENCH_BASE the base is this build: e.g. LAMMPS's spatial
+#   sort against PERIDEM's grain order, the same build),
 #   PERIDEM_BENCH_VARS="-var balance no -var g 0" (more -var settings of in.timed)
 # Cost against the number of grains (also printed as ns per node-step and the ratio of the
 # largest bed's to the smallest's):
@@ -74,8 +77,11 @@ run_stock() {
 # the beds first; then every repeat runs the yardstick and every bed, bond style, rank count
 # and build in turn, so that the machine's changes of speed (up to 50 % within minutes here)
 # hit all alike
-builds=("$build")
-[ -n "$base" ] && builds+=("$(realpath "$base")")
+runs=("this|$build|")
+base_vars=${PERIDEM_BENCH_BASE_VARS:-}
+if [ -n "$base" ] || [ -n "$base_vars" ]; then
+  runs+=("base|$(realpath "${base:-$build}")|$base_vars")
+fi
 for n in "${grains[@]}"; do
   for b in $bonds_list; do
     mpirun -np 1 "$build/lmp_peridem" -in in.compaction -var potentials "$pot" -var ngrains "$n" \
@@ -88,11 +94,14 @@ for _ in $(seq "$repeats"); do
   for n in "${grains[@]}"; do
     for b in $bonds_list; do
       for np in $ranks_list; do
-        for bd in "${builds[@]}"; do
+        for r in "${runs[@]}"; do
+          IFS='|' read -r name bd extra <<<"$r"
+          read -r -a extra_vars <<<"$extra"
           mpirun -np "$np" "$bd/lmp_peridem" -in in.timed -var potentials "$pot" -var steps "$steps" \
-            -var restart "bed_${n}_$b.restart" "${timed_vars[@]}" -log log.t -screen none
+            -var restart "bed_${n}_$b.restart" "${timed_vars[@]}" "${extra_vars[@]}" -log log.t \
+            -screen none
           line=$(parse log.t)
-          key="$n|$b|$np|$bd"
+          key="$n|$b|$np|$name"
           if [ -z "${best[$key]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$key]%% *} else 1)"; then
             best[$key]="$line"
           fi
@@ -108,9 +117,9 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|-
 for n in "${grains[@]}"; do
   for b in $bonds_list; do
     for np in $ranks_list; do
-      for bd in "${builds[@]}"; do
-        name=$([ "$bd" = "$build" ] && echo this || echo base)
-        python3 - "$name" "$n" "$b" "$np" "$steps" "$stock_best" ${best["$n|$b|$np|$bd"]} <<'PY'
+      for r in "${runs[@]}"; do
+        name=${r%%|*}
+        python3 - "$name" "$n" "$b" "$np" "$steps" "$stock_best" ${best["$n|$b|$np|$name"]} <<'PY'
 import sys
 name, n, b, np_, steps, stock = sys.argv[1:7]
 loop, cpu, pair, bond, neigh, comm, mod, nb, nat, nbond, mem = map(float, sys.argv[7:])
@@ -136,10 +145,10 @@ if [ ${#grains[@]} -gt 1 ]; then
   echo
   for b in $bonds_list; do
     for np in $ranks_list; do
-      for bd in "${builds[@]}"; do
-        name=$([ "$bd" = "$build" ] && echo this || echo base)
+      for r in "${runs[@]}"; do
+        name=${r%%|*}
         args=()
-        for n in "${grains[@]}"; do args+=("$n" ${best["$n|$b|$np|$bd"]}); done
+        for n in "${grains[@]}"; do args+=("$n" ${best["$n|$b|$np|$name"]}); done
         python3 - "$name" "$b" "$np" "$steps" "${args[@]}" <<'PY'
 import sys
 name, b, np_, steps = sys.argv[1:5]
