@@ -91,6 +91,12 @@ class PairPeridemContact : public Pair {
   std::vector<double> grain_force; // damping force on each grain (3)
   // grain pairs in contact: grain IDs (smaller first) and the node types
   std::vector<std::array<tagint, 4>> touch_local, touch_all;
+  // the neighbour pairs, copied at each build of the list (copy_neighbour_pairs)
+  struct NodePair {
+    int i, j;
+  };
+  std::vector<NodePair> pairs;
+  void copy_neighbour_pairs();
   std::vector<int> counts, displs; // for MPI_Allgatherv
 
   int gather_counts(int n);         // counts, displs for MPI_Allgatherv; total

@@ -24,7 +24,10 @@
 #include "register_driver.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <mpi.h>
 #include <string>
@@ -182,4 +185,55 @@ TEST_F(LammpsTest, PairPeridemContactRanksMatchOneRank)
     MPI_Allreduce(&n, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD);
     EXPECT_EQ(total, static_cast<long>(f1.size()));
   }
+}
+
+// rerun sets up every snapshot (each one builds the neighbour list anew): the pair style's
+// copy of the list (copy_neighbour_pairs) follows it. After a run with the grains apart,
+// snapshot 1 has them apart, snapshot 2 touching: its contact forces are those of a plain
+// run in that configuration (a copy kept from the run or snapshot 1 misses those pairs).
+TEST_F(LammpsTest, PairPeridemContactRerunSeesThePairsOfEverySnapshot)
+{
+  int nprocs = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  if (nprocs > 1) GTEST_SKIP() << "forces compared by atom on one rank";
+  const std::string apart = scratch() + "apart.dump", touching = scratch() + "touching.dump",
+                    fdump = scratch() + "forces.dump";
+  command(setup("on", "yes"));
+  const auto f_touching = forces(lmp);
+  ASSERT_GT(max_force(f_touching), 0.0);
+  command("reset_timestep 2\nwrite_dump all custom " + touching +
+          " id x y modify format float %.17g\n"
+          "group right molecule 2\ndisplace_atoms right move 0.8 0 0 units box\n"
+          "reset_timestep 1\nwrite_dump all custom " +
+          apart + " id x y modify format float %.17g");
+  {
+    std::ofstream out(apart, std::ios::app);
+    std::ifstream in(touching);
+    out << in.rdbuf();
+  }
+  command("run 0 post no"); // the pair style's last list: the grains apart
+  command("dump f all custom 1 " + fdump + " id fx fy\ndump_modify f sort id format float %.17g");
+  command("rerun " + apart + " dump x y");
+  command("undump f");
+
+  std::map<tagint, std::array<double, 2>> rerun_f;
+  std::ifstream in(fdump);
+  std::string line;
+  long step = -1;
+  bool atoms = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM:", 0) == 0) {
+      atoms = line.rfind("ITEM: ATOMS", 0) == 0;
+      if (line.rfind("ITEM: TIMESTEP", 0) == 0 && std::getline(in, line)) step = std::stol(line);
+    } else if (atoms && step == 2) {
+      std::istringstream ss(line);
+      tagint id;
+      double fx, fy;
+      if (ss >> id >> fx >> fy) rerun_f[id] = {fx, fy};
+    }
+  }
+  ASSERT_EQ(rerun_f.size(), f_touching.size());
+  const double fmax = max_force(f_touching);
+  for (const auto &[t, v] : f_touching)
+    for (int d = 0; d < 2; d++) EXPECT_NEAR(rerun_f.at(t)[d], v[d], 1e-9 * fmax) << "atom " << t;
 }
