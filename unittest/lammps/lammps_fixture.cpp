@@ -19,6 +19,7 @@
 #include <unistd.h>
 #include <fstream>
 #include <mpi.h>
+#include <sstream>
 
 using namespace LAMMPS_NS;
 
@@ -100,4 +101,25 @@ int main(int argc, char **argv)
   const int rc = RUN_ALL_TESTS();
   MPI_Finalize();
   return rc;
+}
+
+std::map<long, std::array<double, 2>> read_dump_pairs(const std::string &path, long step)
+{
+  std::map<long, std::array<double, 2>> out;
+  std::ifstream in(path);
+  std::string line;
+  long now = -1;
+  bool atoms = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("ITEM:", 0) == 0) {
+      atoms = line.rfind("ITEM: ATOMS", 0) == 0;
+      if (line.rfind("ITEM: TIMESTEP", 0) == 0 && std::getline(in, line)) now = std::stol(line);
+    } else if (atoms && now == step) {
+      std::istringstream ss(line);
+      long id;
+      double a, b;
+      if (ss >> id >> a >> b) out[id] = {a, b};
+    }
+  }
+  return out;
 }

@@ -14,6 +14,8 @@
 
 #include "gtest/gtest.h"
 
+#include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -44,5 +46,9 @@ LAMMPS_NS::LAMMPS *make_lammps(const std::vector<std::string> &extra_args = {},
 
 // Write text to a file (test fixtures).
 void write_text_file(const std::string &path, const std::string &text);
+
+// The per-atom lines "id a b" of the snapshot at `step` of a LAMMPS text dump (dump custom
+// ... id a b, e.g. id fx fy), by atom ID.
+std::map<long, std::array<double, 2>> read_dump_pairs(const std::string &path, long step);
 
 #endif

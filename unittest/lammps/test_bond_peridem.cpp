@@ -454,25 +454,7 @@ TEST_F(BondPeridem, RerunSeesTheBondListOfEverySnapshot)
                         fdump));
     command(fmt::format("rerun {} dump x y", snaps)); // 2d: no z
     command("undump f");
-    std::map<tagint, std::array<double, 2>> rerun_f;
-    {
-      std::ifstream in(fdump);
-      std::string line;
-      long step = -1;
-      bool atoms = false;
-      while (std::getline(in, line)) {
-        if (line.rfind("ITEM:", 0) == 0) {
-          atoms = line.rfind("ITEM: ATOMS", 0) == 0;
-          if (line.rfind("ITEM: TIMESTEP", 0) == 0 && std::getline(in, line))
-            step = std::stol(line);
-        } else if (atoms && step == 2) {
-          std::istringstream ss(line);
-          tagint id;
-          double fx, fy;
-          if (ss >> id >> fx >> fy) rerun_f[id] = {fx, fy};
-        }
-      }
-    }
+    const auto rerun_f = read_dump_pairs(fdump, 2);
 
     setup();
     command(fmt::format("read_dump {} 2 x y\nrun 0 post no", snaps));
