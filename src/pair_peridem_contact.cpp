@@ -102,7 +102,7 @@ void PairPeridemContact::copy_neighbour_pairs()
     const int *jlist = firstneigh[i];
     for (int jj = 0; jj < numneigh[i]; jj++) pairs.push_back({i, jlist[jj] & NEIGHMASK});
   }
-  pairs.push_back({-1, -1});
+  pairs_copied = true;
 }
 
 /* ----------------------------------------------------------------------
@@ -178,8 +178,8 @@ void PairPeridemContact::compute(int eflag, int vflag)
 
   // the pairs of the neighbour list, copied when LAMMPS has just built it (neighbor->ago is 0
   // in the step of every build: runs, minimisation, each snapshot of rerun)
-  if (neighbor->ago == 0 || pairs.empty()) copy_neighbour_pairs();
-  const int npairs = int(pairs.size()) - 1; // the last entry is a sentinel
+  if (neighbor->ago == 0 || !pairs_copied) copy_neighbour_pairs();
+  const int npairs = int(pairs.size());
 
   double dissipated_now = 0.0;
   touch_local.clear();

@@ -96,6 +96,7 @@ class PairPeridemContact : public Pair {
     int i, j;
   };
   std::vector<NodePair> pairs;
+  bool pairs_copied = false; // a list has been copied (it may hold no pairs)
   void copy_neighbour_pairs();
   std::vector<int> counts, displs; // for MPI_Allgatherv
 

@@ -34,6 +34,9 @@
 #   PERIDEM_BENCH_RANKS=1 PERIDEM_BENCH_BONDS=peridem PERIDEM_BENCH_WARMUP=300 \
 #     bench/compaction-bed/run_bench.sh build 5 100 50 200 500 1000 2000
 # Every repeat runs the yardstick and every case once, in turn (best of the repeats each).
+# With 1 and 2 ranks, also the 2-rank efficiency T1 / (2 T2): best over best, the slower
+# core's best 1-rank time over the best 2-rank time (1-rank runs alternate between cores 0 and 1
+# from repeat to repeat), and the median over the repeats of the two runs of each repeat.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$(realpath "${1:-$here/build}")"
@@ -88,20 +91,28 @@ for n in "${grains[@]}"; do
       -var bond "$b" -var warmup "$warmup" -var restart "bed_${n}_$b.restart" -log "log.warm_${n}_$b" -screen none
   done
 done
-declare -A best=()
-for _ in $(seq "$repeats"); do
+declare -A best=() loops=()
+ncores=$(nproc)
+for rep in $(seq "$repeats"); do
   run_stock
+  # 1-rank runs on core 0 and core 1 in turn (mpirun binds one rank to core 0): the two cores
+  # of a shared VM are not always equally fast, and a 2-rank run uses both (efficiency below)
+  pin=()
+  [ "$ncores" -gt 1 ] && pin=(taskset -c $(((rep - 1) % 2)))
   for n in "${grains[@]}"; do
     for b in $bonds_list; do
       for np in $ranks_list; do
         for r in "${runs[@]}"; do
           IFS='|' read -r name bd extra <<<"$r"
           read -r -a extra_vars <<<"$extra"
-          mpirun -np "$np" "$bd/lmp_peridem" -in in.timed -var potentials "$pot" -var steps "$steps" \
+          one_rank_pin=()
+          [ "$np" -eq 1 ] && one_rank_pin=("${pin[@]}")
+          mpirun -np "$np" "${one_rank_pin[@]}" "$bd/lmp_peridem" -in in.timed -var potentials "$pot" -var steps "$steps" \
             -var restart "bed_${n}_$b.restart" "${timed_vars[@]}" "${extra_vars[@]}" -log log.t \
             -screen none
           line=$(parse log.t)
           key="$n|$b|$np|$name"
+          loops["$key|$rep"]=${line%% *}
           if [ -z "${best[$key]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$key]%% *} else 1)"; then
             best[$key]="$line"
           fi
@@ -140,6 +151,39 @@ PY
     done
   done
 done
+# 2-rank strong-scaling efficiency T1 / (2 T2) of each bed, bond style and build, three ways:
+# best 1-rank over best 2-rank time; the slower core's best 1-rank time (1-rank runs alternate
+# between the cores) over the best 2-rank time (an even split of the bed waits for the slower
+# core); and the median over the repeats of the 1-rank and 2-rank runs of one repeat
+if [[ " $ranks_list " == *" 1 "* && " $ranks_list " == *" 2 "* ]]; then
+  echo
+  for n in "${grains[@]}"; do
+    for b in $bonds_list; do
+      for r in "${runs[@]}"; do
+        name=${r%%|*}
+        args=()
+        for rep in $(seq "$repeats"); do
+          args+=("${loops["$n|$b|1|$name|$rep"]}" "${loops["$n|$b|2|$name|$rep"]}")
+        done
+        python3 - "$name" "$n" "$b" "$ncores" "${args[@]}" <<'PY'
+import statistics, sys
+name, n, b, ncores = sys.argv[1:5]
+t = list(map(float, sys.argv[5:]))
+one, two = t[0::2], t[1::2]
+eff = lambda t1, t2: 100 * t1 / (2 * t2)
+line = f"{name}, {n} grains, {b}: 2-rank efficiency {eff(min(one), min(two)):.1f} % (best over best)"
+if int(ncores) > 1 and len(one) > 1:
+    core0, core1 = min(one[0::2]), min(one[1::2])
+    line += (f", {eff(max(core0, core1), min(two)):.1f} % (slower core's best 1-rank time: "
+             f"core 0 {core0:.4g} s, core 1 {core1:.4g} s)")
+per = [eff(a, c) for a, c in zip(one, two)]
+line += f", median of the repeats {statistics.median(per):.1f} % ({min(per):.1f}-{max(per):.1f})"
+print(line)
+PY
+      done
+    done
+  done
+fi
 # cost per node-step against the size of the bed (wall time, best of the repeats)
 if [ ${#grains[@]} -gt 1 ]; then
   echo
