@@ -51,6 +51,9 @@ warmup=${PERIDEM_BENCH_WARMUP:-1000}
 base=${PERIDEM_BENCH_BASE:-}
 read -r -a timed_vars <<<"${PERIDEM_BENCH_VARS:-}"
 source "$here/unittest/scripts/mpi_env.sh"
+source "$here/bench/current_build.sh"
+require_current_build "$build"
+[ -z "$base" ] || require_current_build "$(realpath "$base")"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cp "$here/bench/compaction-bed/in.compaction" "$here/bench/compaction-bed/in.timed" "$work/"

@@ -19,6 +19,8 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$(realpath "${1:-$here/build}")"
+source "$here/bench/current_build.sh"
+require_current_build "$build"
 steps="${2:-1000}"
 n="${3:-500}"
 work="$(mktemp -d)"

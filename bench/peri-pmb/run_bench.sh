@@ -26,6 +26,9 @@ build="$(realpath "${1:-$here/build}")"
 repeats="${2:-3}"
 base=${PERIDEM_BENCH_BASE:-}
 source "$here/unittest/scripts/mpi_env.sh"
+source "$here/bench/current_build.sh"
+require_current_build "$build"
+[ -z "$base" ] || require_current_build "$(realpath "$base")"
 stock_input=${PERIDEM_BENCH_STOCK:-/usr/share/lammps/examples/peri/in.peri.pmb}
 example=${PERIDEM_BENCH_EXAMPLE:-peri-impact/in.peri_impact}
 IFS='|' read -r stock_name our_name <<< "${PERIDEM_BENCH_STYLES:-peri/pmb|bond_style peridem}"

@@ -24,6 +24,9 @@ repeats="${2:-5}"
 steps="${3:-20000}"
 base=${PERIDEM_BENCH_BASE:-}
 source "$here/unittest/scripts/mpi_env.sh"
+source "$here/bench/current_build.sh"
+require_current_build "$build"
+[ -z "$base" ] || require_current_build "$(realpath "$base")"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cp "$here/bench/two-disc/in.drop" "$work/"
