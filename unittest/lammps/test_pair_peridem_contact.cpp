@@ -27,7 +27,6 @@
 #include <array>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <map>
 #include <mpi.h>
 #include <string>
