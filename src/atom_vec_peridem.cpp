@@ -16,8 +16,10 @@
 #include "lmp_peridem_compat.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -119,7 +121,32 @@ void AtomVecPeridem::data_atom_post(int ilocal)
                "Invalid grain ID {} for atom {} in Atoms section of data file "
                "(atom style peridem needs grain ID > 0)",
                atom->molecule[ilocal], atom->tag[ilocal]);
+  check_reference_position(ilocal, "in Atoms section of data file");
   rmass[ilocal] *= vfrac[ilocal];
+}
+
+/* ----------------------------------------------------------------------
+   x0 must be finite and, along a periodic dimension, within one box
+   length of the box: bonds are measured between the minimum images of
+   x0, and a reference position many periods away has no meaningful image
+   (LAMMPS 29Sep2021's minimum image never ends on x0 = 1e30)
+------------------------------------------------------------------------- */
+
+void AtomVecPeridem::check_reference_position(int i, const char *where)
+{
+  const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  for (int d = 0; d < 3; d++) {
+    const double v = x0[i][d];
+    const double lo = domain->boxlo[d], hi = domain->boxhi[d], len = hi - lo;
+    if (!std::isfinite(v))
+      error->one(FLERR, "Invalid reference position {} {} {} of atom {} {} (atom style peridem)",
+                 x0[i][0], x0[i][1], x0[i][2], atom->tag[i], where);
+    if (periodic[d] && (v < lo - len || v > hi + len))
+      error->one(FLERR,
+                 "Reference position {} {} {} of atom {} {} lies more than one box length "
+                 "outside the periodic box along {} ({} to {}; atom style peridem)",
+                 x0[i][0], x0[i][1], x0[i][2], atom->tag[i], where, "xyz"[d], lo, hi);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -169,6 +196,43 @@ void AtomVecPeridem::pack_restart_post(int ilocal)
 void AtomVecPeridem::unpack_restart_init(int ilocal)
 {
   nspecial[ilocal][0] = nspecial[ilocal][1] = nspecial[ilocal][2] = 0;
+  check_restart_atom(ilocal);
+}
+
+/* ----------------------------------------------------------------------
+   a restart file is trusted input of LAMMPS, but what this style reads
+   from it is checked, so that a damaged file stops here with a message
+   instead of crashing a bond style later (a bond type beyond the types
+   indexes their coefficient arrays)
+------------------------------------------------------------------------- */
+
+void AtomVecPeridem::check_restart_atom(int i)
+{
+  const tagint id = atom->tag[i];
+  const char *damaged = "(damaged file?)";
+  if (id <= 0)
+    error->one(FLERR, "Invalid atom ID {} in restart file {} (atom style peridem)", id, damaged);
+  if (!(vfrac[i] > 0.0) || !std::isfinite(vfrac[i]) || !(rmass[i] > 0.0) ||
+      !std::isfinite(rmass[i]))
+    error->one(FLERR,
+               "Invalid volume {} or mass {} of atom {} in restart file {} (atom style "
+               "peridem)",
+               vfrac[i], rmass[i], id, damaged);
+  if (atom->molecule[i] <= 0)
+    error->one(FLERR, "Invalid grain ID {} of atom {} in restart file {} (atom style peridem)",
+               atom->molecule[i], id, damaged);
+  if (num_bond[i] < 0 || num_bond[i] > atom->bond_per_atom)
+    error->one(FLERR, "Invalid bond count {} of atom {} in restart file {} (atom style peridem)",
+               num_bond[i], id, damaged);
+  for (int m = 0; m < num_bond[i]; m++) {
+    const int t = bond_type[i][m];
+    if (t > atom->nbondtypes || -t > atom->nbondtypes || atom->bond_atom[i][m] <= 0)
+      error->one(FLERR,
+                 "Invalid bond {} (type {}, partner {}) of atom {} in restart file {} (atom "
+                 "style peridem, {} bond types)",
+                 m + 1, t, atom->bond_atom[i][m], id, damaged, atom->nbondtypes);
+  }
+  check_reference_position(i, "in restart file");
 }
 
 /* ----------------------------------------------------------------------

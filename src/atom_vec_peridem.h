@@ -54,6 +54,9 @@ class AtomVecPeridem : public AtomVec {
   double *rmass, *vfrac;
   double **x0;
 
+  void check_reference_position(int i, const char *where);
+  void check_restart_atom(int i);
+
   // pack_data writes density, not mass: the mass is kept here meanwhile
   double rmass_one;
   // restart files carry turned-off (negative type) bonds as positive types

@@ -489,7 +489,7 @@ void BondPeridem::validate_bonds()
                  "join nodes of one grain (use bond_style peridem cohesive yes to allow this)",
                  STYLE, tag[i1], tag[i2], molecule[i1], molecule[i2]);
     const double r0 = reference_length(i1, i2);
-    if (r0 > horizon[type] * (1.0 + 1e-10))
+    if (!(r0 <= horizon[type] * (1.0 + 1e-10))) // NaN too
       error->one(FLERR,
                  "{}: bond between atoms {} and {} (type {}) has reference length {} longer "
                  "than the horizon {}",
@@ -498,6 +498,7 @@ void BondPeridem::validate_bonds()
       error->one(FLERR, "{}: atoms {} and {} are bonded but have the same reference position",
                  STYLE, tag[i1], tag[i2]);
   }
+  report_time_step();
 }
 
 /* ----------------------------------------------------------------------
@@ -843,6 +844,13 @@ void BondPeridem::read_restart(FILE *fp)
   MPI_Bcast(&conic[1], n, MPI_INT, 0, world);
   if (comm->me == 0) utils::sfread(FLERR, &breakable[1], sizeof(int), n, fp, nullptr, error);
   MPI_Bcast(&breakable[1], n, MPI_INT, 0, world);
+  constexpr double big = std::numeric_limits<double>::max();
+  peridem_lmp::check_restart_values(lmp, STYLE, "bond constant c", &c[1], n, 1e-300, big);
+  peridem_lmp::check_restart_values(lmp, STYLE, "critical stretch", &s0[1], n, 1e-300, big);
+  peridem_lmp::check_restart_values(lmp, STYLE, "horizon", &horizon[1], n, 1e-300, big);
+  peridem_lmp::check_restart_values(lmp, STYLE, "spacing", &spacing[1], n, 0.0, big);
+  peridem_lmp::check_restart_values(lmp, STYLE, "micromodulus", &conic[1], n, 0, 1);
+  peridem_lmp::check_restart_values(lmp, STYLE, "break flag", &breakable[1], n, 0, 1);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
@@ -858,6 +866,7 @@ void BondPeridem::read_restart_settings(FILE *fp)
   int settings[5];
   if (comm->me == 0) utils::sfread(FLERR, settings, sizeof(int), 5, fp, nullptr, error);
   MPI_Bcast(settings, 5, MPI_INT, 0, world);
+  peridem_lmp::check_restart_values(lmp, STYLE, "setting", settings, 5, 0, 1);
   break_flag = settings[0];
   breakage = settings[1] ? peridem::BreakageMode::Absolute : peridem::BreakageMode::Tension;
   volume_correction = settings[2];

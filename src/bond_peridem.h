@@ -54,6 +54,9 @@ class BondPeridem : public Bond {
   // most 1/2 sum_n k[n] (e_n . (u_j - u_i))^2 (e_n the reference bond direction).
   // Reference geometry, intact bonds; bond_peridem_stability.cpp.
   virtual void stability_springs(std::vector<double> &k);
+  // per atom type, the largest 2 lambda_max(A_i)/m_i of the nodes (A_i = sum of k e e over
+  // the node's bonds): the bonds' squared frequency bound (peridem_contact_law.h); collective
+  std::vector<double> stability_omega2_of_types();
 
  protected:
   // the coefficients of one bond type, as bond_coeff derives them
@@ -160,6 +163,8 @@ class BondPeridem : public Bond {
   void allocate();
   void set_type(int type, const TypeParams &p);
   void validate_bonds();
+  void report_time_step();
+  std::string last_time_step_report; // printed again only when it changes
   void break_bond(int n, int i1, int i2, double r0, double s0type);
   double reference_length(int i1, int i2) const;
   double reference_length_flat(const double *x0, int i1, int i2) const;

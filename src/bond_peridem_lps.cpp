@@ -38,6 +38,7 @@
 #include "lmp_peridem_parse.h"
 
 #include <cmath>
+#include <limits>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -165,8 +166,23 @@ void BondPeridemLPS::compute_weighted_volume()
     if (newton_bond || i2 < nlocal) sum[i2] += lcache.wj[n] * lcache.r0[n];
   }
   if (newton_bond) bonds_fix->reverse_sum(sum);
+  const double *nbroken = bonds_fix->broken_count();
+  bigint damaged = 0, damaged_all = 0;
   for (int i = 0; i < nlocal; i++)
-    if (!(m[i] > 0.0)) m[i] = sum[i];
+    if (!(m[i] > 0.0)) {
+      m[i] = sum[i];
+      if (nbroken[i] > 0.0) damaged++;
+    }
+  // m belongs to the reference configuration: a node that lost bonds before this style knew
+  // it (a state of bond_style peridem, a data file without peridem_wvolume) gets a smaller m
+  MPI_Allreduce(&damaged, &damaged_all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (damaged_all > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "bond_style peridem/lps: {} nodes with broken bonds have no weighted volume "
+                   "of the reference configuration (a state of bond_style peridem, or a data "
+                   "file without peridem_wvolume): their m is summed over the intact bonds "
+                   "only, so their dilation is not that of the undamaged grain",
+                   damaged_all);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -511,6 +527,16 @@ void BondPeridemLPS::read_restart(FILE *fp)
     if (comm->me == 0) utils::sfread(FLERR, &arr[1], sizeof(int), n, fp, nullptr, error);
     MPI_Bcast(&arr[1], n, MPI_INT, 0, world);
   }
+  const char *style = "bond_style peridem/lps";
+  constexpr double big = std::numeric_limits<double>::max();
+  peridem_lmp::check_restart_values(lmp, style, "bulk modulus", &bulk[1], n, 1e-300, big);
+  peridem_lmp::check_restart_values(lmp, style, "shear modulus", &shear[1], n, 0.0, big);
+  peridem_lmp::check_restart_values(lmp, style, "critical stretch", &s0[1], n, 1e-300, big);
+  peridem_lmp::check_restart_values(lmp, style, "horizon", &horizon[1], n, 1e-300, big);
+  peridem_lmp::check_restart_values(lmp, style, "spacing", &spacing[1], n, 0.0, big);
+  peridem_lmp::check_restart_values(lmp, style, "influence function", &influence[1], n, 0,
+                                    int(sizeof(INFLUENCE) / sizeof(INFLUENCE[0])) - 1);
+  peridem_lmp::check_restart_values(lmp, style, "break flag", &breakable[1], n, 0, 1);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
@@ -527,6 +553,7 @@ void BondPeridemLPS::read_restart_settings(FILE *fp)
   int p = 0;
   if (comm->me == 0) utils::sfread(FLERR, &p, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&p, 1, MPI_INT, 0, world);
+  peridem_lmp::check_restart_values(lmp, "bond_style peridem/lps", "plane mode", &p, 1, 0, 2);
   plane = peridem::LpsPlane(p);
 }
 

@@ -30,6 +30,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
+#include <string>
+#include <array>
+#include <map>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -427,6 +431,14 @@ void FixPeridemBonds::unpack_restart(int nlocal, int nth)
   nbroken[nlocal] = extra[nlocal][m + 1];
   zbroken[nlocal] = extra[nlocal][m + 2];
   wvolume[nlocal] = extra[nlocal][m + 3];
+  // a damaged file stops here, not in compute peridem/damage or the LPS force loop
+  const double nb = nbroken[nlocal], z = zbroken[nlocal], w = wvolume[nlocal];
+  if (!(nb >= 0.0 && nb <= 1e9 && nb == std::floor(nb)) || !(z >= 0.0 && std::isfinite(z)) ||
+      !(std::isfinite(w) && (w > 0.0 || w == -1.0)))
+    error->one(FLERR,
+               "fix {}: invalid damage state of atom {} in restart file (broken bonds {}, Z {}, "
+               "weighted volume {}; damaged file?)",
+               ID, atom->tag[nlocal], nb, z, w);
 }
 
 int FixPeridemBonds::size_restart(int)
@@ -494,7 +506,10 @@ void FixPeridemBonds::adopt_data_file_damage()
 {
   int flag = 0, cols = 0;
   const int inb = atom->find_custom("peridem_nbroken", flag, cols);
-  if (inb < 0) return;
+  if (inb < 0) {
+    refuse_misnamed_damage();
+    return;
+  }
   if (flag != 1 || cols != 0)
     error->all(FLERR, "fix {}: per-atom property peridem_nbroken must be a d_ vector", ID);
   const int iz = atom->find_custom("peridem_zbroken", flag, cols);
@@ -506,7 +521,8 @@ void FixPeridemBonds::adopt_data_file_damage()
   const double *nb = atom->dvector[inb], *zb = atom->dvector[iz];
   bigint here = 0, all = 0;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (nb[i] < 0.0 || nb[i] != std::floor(nb[i]) || zb[i] < 0.0)
+    if (!(nb[i] >= 0.0 && nb[i] <= 1e9) || nb[i] != std::floor(nb[i]) || !(zb[i] >= 0.0) ||
+        !std::isfinite(zb[i]))
       error->one(FLERR,
                  "fix {}: invalid damage of atom {} in the data file: broken count {} and Z {} "
                  "(need a whole number >= 0 and Z >= 0)",
@@ -523,14 +539,97 @@ void FixPeridemBonds::adopt_data_file_damage()
     if (flag != 1 || cols != 0)
       error->all(FLERR, "fix {}: per-atom property peridem_wvolume must be a d_ vector", ID);
     const double *m = atom->dvector[im];
-    for (int i = 0; i < atom->nlocal; i++) wvolume[i] = m[i] > 0.0 ? m[i] : -1.0;
+    for (int i = 0; i < atom->nlocal; i++) {
+      // 0: a node without bonds when m was summed (written so), -1: not computed
+      if (!std::isfinite(m[i]) || (m[i] < 0.0 && m[i] != -1.0))
+        error->one(FLERR,
+                   "fix {}: invalid weighted volume {} of atom {} in the data file (need a "
+                   "finite m > 0, or 0 or -1 where it was not computed)",
+                   ID, m[i], atom->tag[i]);
+      wvolume[i] = m[i] > 0.0 ? m[i] : -1.0;
+    }
   }
+  check_damage_per_grain(nb);
   MPI_Allreduce(&here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "fix {}: {} broken bond ends (per-node counts) taken from property/atom "
                    "peridem_nbroken, peridem_zbroken\n",
                    ID, all);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom vectors named like PERIDEM's damage but not as it reads them
+   (d_nbroken instead of d_peridem_nbroken): the section went into them and
+   the damage would be 0 (and the LPS weighted volumes recomputed) without
+   a word
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::refuse_misnamed_damage()
+{
+  for (int k = 0; k < atom->ndvector; k++) {
+    const std::string name = atom->dvname[k] ? atom->dvname[k] : "";
+    if (name.find("broken") == std::string::npos && name.find("wvolume") == std::string::npos)
+      continue;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "fix {}: per-atom property {} looks like the damage of a {} section but is "
+                     "not read, so the nodes start undamaged: name the vectors d_peridem_nbroken "
+                     "d_peridem_zbroken (and d_peridem_wvolume)",
+                     ID, name, DATA_SECTION);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   a broken bond is counted at both of its nodes, which lie in one grain:
+   no node can have lost more bonds than its grain has other nodes, and
+   the counts of a grain sum to an even number unless nodes with bonds to
+   it were deleted (lost delete) or bonds joined grains (cohesive). A line
+   of the section given twice, or one missing, shows as an odd sum.
+------------------------------------------------------------------------- */
+
+void FixPeridemBonds::check_damage_per_grain(const double *nb)
+{
+  const int nlocal = atom->nlocal;
+  const tagint *molecule = atom->molecule;
+  std::map<tagint, std::array<double, 2>> mine; // grain: nodes, broken ends
+  for (int i = 0; i < nlocal; i++) {
+    auto &g = mine[molecule[i]];
+    g[0] += 1.0;
+    g[1] += nb[i];
+  }
+  std::vector<double> flat;
+  for (const auto &g : mine) flat.insert(flat.end(), {double(g.first), g.second[0], g.second[1]});
+  int n = int(flat.size()), nprocs = comm->nprocs;
+  std::vector<int> counts(nprocs), displs(nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
+  std::vector<double> everyone(displs[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Allgatherv(flat.data(), n, MPI_DOUBLE, everyone.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  std::map<tagint, std::array<double, 2>> grains;
+  for (std::size_t k = 0; k + 2 < everyone.size(); k += 3) {
+    auto &g = grains[tagint(everyone[k])];
+    g[0] += everyone[k + 1];
+    g[1] += everyone[k + 2];
+  }
+  for (int i = 0; i < nlocal; i++)
+    if (nb[i] > grains[molecule[i]][0] - 1.0)
+      error->one(FLERR,
+                 "fix {}: atom {} has {} broken bonds in the data file, more than the {} other "
+                 "nodes of its grain {}",
+                 ID, atom->tag[i], nb[i], grains[molecule[i]][0] - 1.0, molecule[i]);
+  bigint odd = 0;
+  tagint first = 0;
+  for (const auto &g : grains)
+    if (std::fmod(g.second[1], 2.0) != 0.0 && odd++ == 0) first = g.first;
+  if (odd > 0 && comm->me == 0)
+    error->warning(FLERR,
+                   "fix {}: the broken bond counts of {} grains (first: grain {}) in the data "
+                   "file sum to an odd number, but each broken bond counts at both its nodes: a "
+                   "line of the {} section is missing or given twice, unless nodes with bonds "
+                   "were deleted (lost delete) or bonds joined grains",
+                   ID, odd, first, DATA_SECTION);
 }
 
 void FixPeridemBonds::write_data_section_size(int, int &nx, int &ny)

@@ -132,6 +132,8 @@ class FixPeridemBonds : public Fix {
   bool grain_order = false; // set_grain_order()
   bigint next_order = 0;    // the step from which pre_exchange() orders the nodes again
   void adopt_data_file_damage();
+  void refuse_misnamed_damage();
+  void check_damage_per_grain(const double *nb);
 
   void clear_ghosts();
   void collect();

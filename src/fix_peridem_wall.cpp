@@ -17,6 +17,7 @@
 ------------------------------------------------------------------------- */
 
 #include "fix_peridem_wall.h"
+#include "fix_peridem_vhistory.h"
 #include "lmp_peridem_citations.h"
 #include "fix_peridem_bonds.h"
 #include "lmp_peridem_topology.h"
@@ -297,9 +298,23 @@ void FixPeridemWall::check_periodic() const
                  STYLE, FACES[w], "xyz"[w / 2], "xyz"[w / 2]);
 }
 
+// damping and friction take v: a run's setup must see the v(n - 1/2) of the step it continues
+// (created here, not in the constructor: LAMMPS is still adding this fix there)
+void FixPeridemWall::post_constructor()
+{
+  const peridem::ContactParams &p = contact.params;
+  if (!contact_from_pair &&
+      (p.damping != peridem::ContactDamping::None || p.friction != peridem::ContactFriction::None))
+    FixPeridemVelocityHistory::instance(lmp, STYLE);
+}
+
 void FixPeridemWall::init()
 {
   check_periodic();
+  // made by this fix or by pair_style peridem/contact (its init_style runs before this)
+  const int ihistory = modify->find_fix(FixPeridemVelocityHistory::ID);
+  history =
+      ihistory >= 0 ? dynamic_cast<FixPeridemVelocityHistory *>(modify->fix[ihistory]) : nullptr;
   // under run_style respa the walls act at the outermost level, with the contact pair style
   // (as LAMMPS's fix wall styles); before, they silently did nothing under respa
   if (utils::strmatch(update->integrate_style, "^respa"))
@@ -483,7 +498,8 @@ void FixPeridemWall::post_force(int vflag)
 
   for (int m = 0; m < ENERGY + 2; m++) local[m] = 0.0;
   double **x = atom->x;
-  double **v = atom->v;
+  const double *setup_v = history ? history->setup_velocities() : nullptr;
+  const double *vel = setup_v ? setup_v : (atom->v ? atom->v[0] : nullptr);
   double **f = atom->f;
   const double *vfrac = atom->vfrac;
   const double *rmass = atom->rmass;
@@ -533,7 +549,7 @@ void FixPeridemWall::post_force(int vflag)
     }
     for (int k = 0; k < 3; k++) {
       in.x[k] = x[i][k];
-      in.v[k] = v[i][k];
+      in.v[k] = vel[3 * i + k];
     }
     in.vol = vfrac[i];
     in.mass = rmass[i];

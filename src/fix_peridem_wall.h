@@ -41,6 +41,7 @@ class FixPeridemWall : public Fix {
  public:
   FixPeridemWall(class LAMMPS *, int, char **);
   ~FixPeridemWall() override;
+  void post_constructor() override;
   int setmask() override;
   void init() override;
   void setup(int) override;
@@ -82,6 +83,8 @@ class FixPeridemWall : public Fix {
   // 'contact pair': the law of pair_style peridem/contact for the node's
   // type (pair_coeff I I), per atom type; empty otherwise
   bool contact_from_pair = false;
+  // v(n - 1/2) in a run's setup (fix peridem/vhistory), where the wall or the pair dissipates
+  class FixPeridemVelocityHistory *history = nullptr;
   std::vector<peridem::ContactParams> type_params;
   int lost_error;       // 1: a node beyond a wall ends the run, 0: counted and warned
   int lost_delete;      // 1: nodes beyond a wall or the box are deleted with their bonds

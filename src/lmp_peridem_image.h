@@ -23,12 +23,25 @@
 
 namespace peridem_lmp {
 
+// LAMMPS 29Sep2021's Domain::minimum_image subtracts one period at a time while the distance
+// exceeds half of it: a non-finite or huge distance (x0 = 1e30 from a data file) never ends
+// there. Beyond a few periods the exact remainder is taken first (the same result, since both
+// are exact; not finite stays not finite, and the caller's checks see it).
+inline void reduce_far_image(double &d, double period)
+{
+  if (!(std::fabs(d) <= 4.0 * period)) d = std::remainder(d, period);
+}
+
 inline void minimum_image(LAMMPS_NS::Domain *domain, double &dx, double &dy, double &dz)
 {
   if ((domain->xperiodic && std::fabs(dx) > domain->xprd_half) ||
       (domain->yperiodic && std::fabs(dy) > domain->yprd_half) ||
-      (domain->zperiodic && std::fabs(dz) > domain->zprd_half))
+      (domain->zperiodic && std::fabs(dz) > domain->zprd_half)) {
+    if (domain->xperiodic) reduce_far_image(dx, domain->xprd);
+    if (domain->yperiodic) reduce_far_image(dy, domain->yprd);
+    if (domain->zperiodic) reduce_far_image(dz, domain->zprd);
     domain->minimum_image(dx, dy, dz);
+  }
 }
 
 } // namespace peridem_lmp

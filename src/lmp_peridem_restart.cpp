@@ -19,7 +19,9 @@
 #include "lammps.h"
 #include "utils.h"
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include <mpi.h>
 #include <vector>
@@ -117,6 +119,28 @@ int read_restart_version(LAMMPS *lmp, FILE *fp, RestartTag tag, int oldest, cons
   return version;
 }
 
+void check_restart_values(LAMMPS *lmp, const char *style, const char *what, const double *values,
+                          int n, double lo, double hi)
+{
+  for (int k = 0; k < n; k++)
+    if (!std::isfinite(values[k]) || values[k] < lo || values[k] > hi)
+      lmp->error->all(FLERR,
+                      "{}: the restart file holds {} {} for entry {} (damaged file? expected a "
+                      "finite value from {} to {})",
+                      style, what, values[k], k + 1, lo, hi);
+}
+
+void check_restart_values(LAMMPS *lmp, const char *style, const char *what, const int *values,
+                          int n, int lo, int hi)
+{
+  for (int k = 0; k < n; k++)
+    if (values[k] < lo || values[k] > hi)
+      lmp->error->all(FLERR,
+                      "{}: the restart file holds {} {} for entry {} (damaged file? expected {} "
+                      "to {})",
+                      style, what, values[k], k + 1, lo, hi);
+}
+
 void write_contact_params(FILE *fp, const peridem::ContactParams &p)
 {
   const std::vector<double> v = contact_fields(p);
@@ -141,6 +165,13 @@ peridem::ContactParams read_contact_params(LAMMPS *lmp, FILE *fp, const char *st
   if (lmp->comm->me == 0)
     utils::sfread(FLERR, v.data(), sizeof(double), n, fp, nullptr, lmp->error);
   MPI_Bcast(v.data(), n, MPI_DOUBLE, 0, lmp->world);
+  // Kn, Rc > 0; the enums (damping, friction) and the flag within their ranges
+  constexpr double big = std::numeric_limits<double>::max();
+  check_restart_values(lmp, style, "contact stiffness and radius", &v[0], 2, 1e-300, big);
+  check_restart_values(lmp, style, "contact damping", &v[2], 1, 0.0, 2.0);
+  check_restart_values(lmp, style, "damping constants", &v[3], 5, -big, big);
+  check_restart_values(lmp, style, "contact friction", &v[8], 1, 0.0, 2.0);
+  check_restart_values(lmp, style, "friction coefficient", &v[9], 1, 0.0, big);
   return contact_from_fields(v);
 }
 

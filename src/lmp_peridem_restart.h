@@ -58,6 +58,14 @@ int read_restart_version(LAMMPS_NS::LAMMPS *lmp, FILE *fp, RestartTag tag, int o
 // being misread. Format 1 wrote the struct as raw bytes; read_contact_params_v1 reads
 // that layout (x86-64 and other LP64 ABIs), which was frozen when format 2 came.
 void write_contact_params(FILE *fp, const peridem::ContactParams &p);
+
+// Restart files are trusted input of LAMMPS; what a PERIDEM style reads from one is checked
+// all the same, so that a damaged file stops with the style named instead of crashing later:
+// every value finite and within [lo, hi].
+void check_restart_values(LAMMPS_NS::LAMMPS *lmp, const char *style, const char *what,
+                          const double *values, int n, double lo, double hi);
+void check_restart_values(LAMMPS_NS::LAMMPS *lmp, const char *style, const char *what,
+                          const int *values, int n, int lo, int hi);
 peridem::ContactParams read_contact_params(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 peridem::ContactParams read_contact_params_v1(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 

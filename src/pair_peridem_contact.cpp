@@ -24,6 +24,7 @@
 #include "lmp_peridem_citations.h"
 
 #include "bond_peridem.h"
+#include "fix_peridem_vhistory.h"
 
 #include "atom.h"
 #include "bond.h"
@@ -119,7 +120,7 @@ bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) con
   // few nodes in contact are far apart in memory, and each row pointer was one more cache
   // miss before the data
   const double *xi = atom->x[0] + 3 * i, *xj = atom->x[0] + 3 * j;
-  const double *vi = atom->v[0] + 3 * i, *vj = atom->v[0] + 3 * j;
+  const double *vi = vel + 3 * i, *vj = vel + 3 * j;
   in.ref_dist = -1.0;
   if (atom->molecule[i] == atom->molecule[j]) {
     if (!self_contact) return false;
@@ -140,6 +141,12 @@ bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) con
   return true;
 }
 
+const double *PairPeridemContact::velocities() const
+{
+  const double *setup = history ? history->setup_velocities() : nullptr;
+  return setup ? setup : (atom->v ? atom->v[0] : nullptr);
+}
+
 /* ----------------------------------------------------------------------
    one pair for compute pair/local and compute group/group: the normal
    part of the pair force (repulsion and normal damping; friction is
@@ -152,6 +159,7 @@ double PairPeridemContact::single(int i, int j, int itype, int jtype, double rsq
                                   double /*factor_coul*/, double /*factor_lj*/, double &fforce)
 {
   fforce = 0.0;
+  vel = atom->v[0];
   peridem::ContactInput in;
   if (rsq <= 0.0 || !pair_input(i, j, in)) return 0.0;
   const peridem::ContactResult res = peridem::contact_force(in, spec[itype][jtype].params);
@@ -170,6 +178,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
   // flat (pair_input explains); a rank without atoms may have no arrays yet
   const double *x = atom->x ? atom->x[0] : nullptr;
   double *f = atom->f ? atom->f[0] : nullptr;
+  vel = velocities();
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
@@ -391,7 +400,6 @@ void PairPeridemContact::sum_grain_centres()
     grain_local.assign(7 * ngrains + 1, 0.0);
     grain_of.resize(nlocal);
     double **x = atom->x;
-    double **v = atom->v;
     const double *rmass = atom->rmass;
     const tagint *molecule = atom->molecule;
     const imageint *image = atom->image;
@@ -408,7 +416,7 @@ void PairPeridemContact::sum_grain_centres()
       s[0] += m;
       for (int k = 0; k < 3; k++) {
         s[1 + k] += m * xu[k];
-        s[4 + k] += m * v[i][k];
+        s[4 + k] += m * vel[3 * i + k];
       }
     }
     grain_sum.resize(grain_local.size());
@@ -585,6 +593,9 @@ void PairPeridemContact::init_style()
   if (dissipative && !comm->ghost_velocity)
     error->all(FLERR, "{} with damping or friction needs ghost velocities: use comm_modify vel yes",
                STYLE);
+  // damping, friction and the centroid dashpot take v: a run's setup must see the v(n - 1/2)
+  // of the step it continues (fix peridem/vhistory)
+  history = dissipative || centroid_on ? FixPeridemVelocityHistory::instance(lmp, STYLE) : nullptr;
   peridem_lmp::request_half_neighbor_list(neighbor, this, instance_me);
   double reach = 0.0;
   for (int i = 1; i <= atom->ntypes; i++)
@@ -655,7 +666,10 @@ void PairPeridemContact::report_time_step()
   MPI_Allreduce(mine.data(), all.data(), (int)mine.size(), MPI_DOUBLE, MPI_MIN, world);
   if (atom->natoms == 0) return;
 
-  const std::vector<double> bond_omega2 = bond_omega2_of_types();
+  // the bonds' part of the bound (BondPeridem::stability_omega2_of_types)
+  auto *bonds = dynamic_cast<BondPeridem *>(force->bond);
+  const std::vector<double> bond_omega2 =
+      bonds ? bonds->stability_omega2_of_types() : std::vector<double>(nt + 1, 0.0);
 
   peridem::TimeStepEstimate overall;
   std::string lines;
@@ -708,57 +722,6 @@ void PairPeridemContact::report_time_step()
                    overall.dt_recommended);
 }
 
-/* ----------------------------------------------------------------------
-   the bonds' part of the time-step bound (peridem_contact_law.h): for
-   each node the tensor A_i = sum of k_b e e over its bonds, with the
-   spring constants k_b of the bond style (BondPeridem::stability_springs:
-   c w V_i V_j/|xi| for bond_style peridem, the bound of
-   lps_spring_constant() for peridem/lps), reference geometry, and per atom
-   type the largest 2 lambda_max(A_i)/m_i. Bonds stored on another rank
-   are not seen here (newton_bond): a node at a rank boundary may miss
-   some, the interior nodes that set the maximum do not.
-------------------------------------------------------------------------- */
-
-std::vector<double> PairPeridemContact::bond_omega2_of_types()
-{
-  const int nt = atom->ntypes;
-  std::vector<double> mine(nt + 1, 0.0), all(nt + 1, 0.0);
-  auto *bonds = dynamic_cast<BondPeridem *>(force->bond);
-  const int nlocal = atom->nlocal;
-  if (bonds && neighbor->nbondlist > 0) {
-    const int d = domain->dimension;
-    std::vector<double> kb;
-    bonds->stability_springs(kb);
-    std::vector<double> A(6 * (size_t)nlocal, 0.0);
-    double **x0 = atom->x0;
-    for (int n = 0; n < neighbor->nbondlist; n++) {
-      const int *b = neighbor->bondlist[n];
-      const int i1 = b[0], i2 = b[1];
-      if (b[2] <= 0 || !(kb[n] > 0.0)) continue;
-      double e[3] = {x0[i2][0] - x0[i1][0], x0[i2][1] - x0[i1][1], x0[i2][2] - x0[i1][2]};
-      peridem_lmp::minimum_image(domain, e[0], e[1], e[2]);
-      const double r0 = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
-      if (!(r0 > 0.0)) continue;
-      for (double &ek : e) ek /= r0;
-      const double outer[6] = {e[0] * e[0], e[1] * e[1], e[2] * e[2],
-                               e[0] * e[1], e[0] * e[2], e[1] * e[2]};
-      for (const int i : {i1, i2}) {
-        if (i >= nlocal) continue;
-        for (int m = 0; m < 6; m++) A[6 * (size_t)i + m] += kb[n] * outer[m];
-      }
-    }
-    for (int i = 0; i < nlocal; i++) {
-      const double *a = &A[6 * (size_t)i];
-      // 2D: (xx, yy, xy); 3D: (xx, yy, zz, xy, xz, yz)
-      const double a2[3] = {a[0], a[1], a[3]};
-      const double lambda = peridem::symmetric_max_eigenvalue(d == 2 ? a2 : a, d);
-      mine[atom->type[i]] = std::max(mine[atom->type[i]], 2.0 * lambda / atom->rmass[i]);
-    }
-  }
-  MPI_Allreduce(mine.data(), all.data(), nt + 1, MPI_DOUBLE, MPI_MAX, world);
-  return all;
-}
-
 /* ---------------------------------------------------------------------- */
 
 void PairPeridemContact::write_restart(FILE *fp)
@@ -796,6 +759,10 @@ void PairPeridemContact::read_restart(FILE *fp)
       double extra[6];
       if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), 6, fp, nullptr, error);
       MPI_Bcast(extra, 6, MPI_DOUBLE, 0, world);
+      constexpr double big = std::numeric_limits<double>::max();
+      peridem_lmp::check_restart_values(lmp, STYLE, "material constants", extra, 3, 0.0, big);
+      peridem_lmp::check_restart_values(lmp, STYLE, "centroid settings", extra + 3, 2, 0.0, big);
+      peridem_lmp::check_restart_values(lmp, STYLE, "Kn form", extra + 5, 1, 4.0, 5.0);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
       s.density = extra[2];

@@ -69,7 +69,6 @@ class PairPeridemContact : public Pair {
   void mix(int i, int j);
   void report_time_step();
   // per atom type: max over its nodes of 2 lambda_max(A_i)/m_i of their bonds
-  std::vector<double> bond_omega2_of_types();
   std::string last_time_step_report; // printed again only when it changes
   bool start_checked = false;        // overlaps at the first step reported (setup())
   void report_start_overlaps();
@@ -97,6 +96,11 @@ class PairPeridemContact : public Pair {
   };
   std::vector<NodePair> pairs;
   bool pairs_copied = false; // a list has been copied (it may hold no pairs)
+  // the velocities the forces take, flat: atom->v, or in a run's setup those of the step it
+  // continues (fix peridem/vhistory, when the contact dissipates)
+  class FixPeridemVelocityHistory *history = nullptr;
+  const double *vel = nullptr;
+  const double *velocities() const;
   void copy_neighbour_pairs();
   std::vector<int> counts, displs; // for MPI_Allgatherv
 

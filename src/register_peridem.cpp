@@ -28,6 +28,7 @@
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
+#include "fix_peridem_vhistory.h"
 #include "fix_peridem_wall.h"
 #include "pair_peridem_contact.h"
 
@@ -79,6 +80,7 @@ void for_each_style(StyleSink &sink)
   sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
+  sink.fix("peridem/vhistory", &fix_creator<FixPeridemVelocityHistory>);
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);
   sink.compute("peridem/fragments", &compute_creator<ComputePeridemFragments>);
   sink.compute("peridem/grain", &compute_creator<ComputePeridemGrain>);

@@ -161,3 +161,10 @@ find_program(PERIDEM_CATALOGUE_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 add_test(NAME error_catalogue
   COMMAND ${PERIDEM_CATALOGUE_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check_error_catalogue.py
           --build ${CMAKE_BINARY_DIR})
+peridem_catalogue_error(vhistory_not_vhistory "pair_style peridem/contact: fix PERIDEM_VHISTORY is not a fix peridem/vhistory"
+  -var pre "comm_modify vel yes" -var pre2 "pair_style peridem/contact"
+  -var pre3 "pair_coeff * * Kn 1e23 Rc 0.9e-3 damping nodal 0.5" -var bad "fix PERIDEM_VHISTORY all nve")
+peridem_catalogue_error(vhistory_args "Illegal fix peridem/vhistory command: it takes no arguments"
+  -var bad "fix h all peridem/vhistory extra")
+peridem_catalogue_error(vhistory_user "fix peridem/vhistory is created by pair_style peridem/contact and fix peridem/wall \\(as fix PERIDEM_VHISTORY\\); do not define it yourself \\(fix mine\\)"
+  -var bad "fix mine all peridem/vhistory")

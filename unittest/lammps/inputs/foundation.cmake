@@ -16,6 +16,15 @@ peridem_add_error_test(atom_negative_density ${_in}/read_data.in "Invalid densit
   -var inputs ${_in} -var data bad_density.data)
 peridem_add_error_test(atom_zero_grain ${_in}/read_data.in "Invalid grain ID 0 for atom 2"
   -var inputs ${_in} -var data bad_grain.data)
+# reference positions: far outside a periodic box (hung in LAMMPS's minimum image when the
+# bond style measured the bond) and not finite
+peridem_add_error_test(atom_x0_far_periodic ${_in}/bond_error.in
+  "Reference position 1e\\+30 0 0 of atom 2 in Atoms section of data file lies more than one box length outside the periodic box along x"
+  -var inputs ${_in} -var data bond_x0_far.data -var case bond_ok.lmp)
+peridem_add_error_test(atom_x0_not_finite ${_in}/bond_error.in
+  "Invalid reference position 0.1 inf 0 of atom 2 in Atoms section of data file"
+  -var inputs ${_in} -var data bond_x0_inf.data -var case bond_ok.lmp)
+set_tests_properties(error.atom_x0_far_periodic error.atom_x0_not_finite PROPERTIES TIMEOUT 60)
 # (LAMMPS's own message: 29 Sep 2021 and 4 Feb 2025 word it differently)
 peridem_add_error_test(atom_missing_x0 ${_in}/read_data.in
   "Incorrect (atom format in|format in Atoms section of) data file"

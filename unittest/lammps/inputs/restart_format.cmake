@@ -27,11 +27,18 @@ add_test(NAME restart.contact_format1_read
 
 # a bed compacted by a moving lid (the soak's input on 12 grains: contact with
 # nodal damping and friction, gravity, fix peridem/wall, broken bonds) continues
-# through a restart file as the same two runs without one, on 1 and 2 ranks
+# through a run boundary and a restart file as one uninterrupted run, on 1 and 2
+# ranks; the centroid variant damps between grain centres (13 broken bonds)
 foreach(_np 1 2)
   add_test(NAME restart.bed_continue_np${_np}
     COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
             -in ${_in}/bed_restart.in -log none -echo none
             -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag np${_np}
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  add_test(NAME restart.bed_continue_centroid_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${_in}/bed_restart.in -log none -echo none
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag centroid_np${_np}
+            -var damping "centroid 0.8 100"
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()

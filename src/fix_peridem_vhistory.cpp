@@ -1,0 +1,235 @@
+/* ----------------------------------------------------------------------
+   PERIDEM - peridynamic grains (PeriDEM) for LAMMPS
+
+   Copyright (C) 2026 The PERIDEM developers.
+   This software is distributed under the GNU General Public License,
+   version 2; see the LICENSE file in the top-level PERIDEM directory.
+   SPDX-License-Identifier: GPL-2.0-only
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   PERIDEM: fix peridem/vhistory (see the header)
+------------------------------------------------------------------------- */
+
+#include "fix_peridem_vhistory.h"
+#include "lmp_peridem_compat.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------- */
+
+FixPeridemVelocityHistory *FixPeridemVelocityHistory::instance(LAMMPS *lmp, const char *caller)
+{
+  Modify *modify = lmp->modify;
+  const int ifix = modify->find_fix(ID);
+  Fix *fix =
+      ifix >= 0 ? modify->fix[ifix] : modify->add_fix(fmt::format("{} all peridem/vhistory", ID));
+  auto *history = dynamic_cast<FixPeridemVelocityHistory *>(fix);
+  if (!history) lmp->error->all(FLERR, "{}: fix {} is not a fix peridem/vhistory", caller, ID);
+  return history;
+}
+
+FixPeridemVelocityHistory::FixPeridemVelocityHistory(LAMMPS *lmp, int narg, char **arg)
+    : Fix(lmp, narg, arg), vhalf(nullptr), vend(nullptr), known(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Illegal fix peridem/vhistory command: it takes no arguments");
+  if (std::strcmp(id, ID) != 0)
+    error->all(FLERR,
+               "fix peridem/vhistory is created by pair_style peridem/contact and fix "
+               "peridem/wall (as fix {}); do not define it yourself (fix {})",
+               ID, id);
+  restart_peratom = 1;
+  comm_forward = 3;
+  maxexchange = NVALUES;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nmax; i++) set_arrays(i);
+}
+
+FixPeridemVelocityHistory::~FixPeridemVelocityHistory()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(vhalf);
+  memory->destroy(vend);
+  memory->destroy(known);
+}
+
+int FixPeridemVelocityHistory::setmask()
+{
+  return PRE_FORCE;
+}
+
+/* ----------------------------------------------------------------------
+   setup of a run: the velocity of each node's forces is v(n - 1/2) of the
+   last step where the node still has the velocity it ended that run with
+   (compared bit for bit), else its velocity; ghosts get their owners'
+------------------------------------------------------------------------- */
+
+void FixPeridemVelocityHistory::setup_pre_force(int)
+{
+  prepared = false;
+  if (update->whichflag != 1) return; // minimisation: no dynamics to continue
+  double **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const bool same =
+        known[i] != 0.0 && v[i][0] == vend[i][0] && v[i][1] == vend[i][1] && v[i][2] == vend[i][2];
+    if (!same)
+      for (int k = 0; k < 3; k++) vhalf[i][k] = v[i][k];
+  }
+  peridem_lmp::forward_comm(comm, this);
+  prepared = true;
+  in_run = true;
+}
+
+const double *FixPeridemVelocityHistory::setup_velocities() const
+{
+  return prepared && update->setupflag && vhalf ? vhalf[0] : nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   every step, before the forces: v is v(n - 1/2) (velocity Verlet's first
+   half-kick is done), the velocity the dissipative forces take
+------------------------------------------------------------------------- */
+
+void FixPeridemVelocityHistory::pre_force(int)
+{
+  prepared = false;
+  double **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++) {
+    vhalf[i][0] = v[i][0];
+    vhalf[i][1] = v[i][1];
+    vhalf[i][2] = v[i][2];
+    known[i] = 1.0;
+  }
+}
+
+// the end of a run: the velocities it ended with
+void FixPeridemVelocityHistory::post_run()
+{
+  prepared = false;
+  in_run = false;
+  double **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int k = 0; k < 3; k++) vend[i][k] = v[i][k];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixPeridemVelocityHistory::grow_arrays(int nmax)
+{
+  memory->grow(vhalf, nmax, 3, "peridem/vhistory:vhalf");
+  memory->grow(vend, nmax, 3, "peridem/vhistory:vend");
+  memory->grow(known, nmax, "peridem/vhistory:known");
+}
+
+void FixPeridemVelocityHistory::set_arrays(int i)
+{
+  for (int k = 0; k < 3; k++) vhalf[i][k] = vend[i][k] = 0.0;
+  known[i] = 0.0;
+}
+
+void FixPeridemVelocityHistory::copy_arrays(int i, int j, int)
+{
+  for (int k = 0; k < 3; k++) {
+    vhalf[j][k] = vhalf[i][k];
+    vend[j][k] = vend[i][k];
+  }
+  known[j] = known[i];
+}
+
+int FixPeridemVelocityHistory::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < 3; k++) {
+    buf[k] = vhalf[i][k];
+    buf[3 + k] = vend[i][k];
+  }
+  buf[6] = known[i];
+  return NVALUES;
+}
+
+int FixPeridemVelocityHistory::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < 3; k++) {
+    vhalf[nlocal][k] = buf[k];
+    vend[nlocal][k] = buf[3 + k];
+  }
+  known[nlocal] = buf[6];
+  return NVALUES;
+}
+
+/* ----------------------------------------------------------------------
+   restart files: a restart written in a run (restart N) is written at the
+   end of a step, with v = v(n) of that step; one written after a run gets
+   the velocities the run ended with
+------------------------------------------------------------------------- */
+
+int FixPeridemVelocityHistory::pack_restart(int i, double *buf)
+{
+  buf[0] = NVALUES + 1;
+  const double *ve = in_run ? atom->v[i] : vend[i];
+  for (int k = 0; k < 3; k++) {
+    buf[1 + k] = vhalf[i][k];
+    buf[4 + k] = ve[k];
+  }
+  buf[7] = known[i];
+  return NVALUES + 1;
+}
+
+void FixPeridemVelocityHistory::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const double *buf = &extra[nlocal][m + 1];
+  bool finite = true;
+  for (int k = 0; k < NVALUES; k++) finite = finite && std::isfinite(buf[k]);
+  if (!finite || (buf[6] != 0.0 && buf[6] != 1.0))
+    error->one(FLERR, "fix {}: invalid velocity history of atom {} in restart file (damaged file?)",
+               ID, atom->tag[nlocal]);
+  unpack_exchange(nlocal, const_cast<double *>(buf));
+}
+
+int FixPeridemVelocityHistory::size_restart(int)
+{
+  return NVALUES + 1;
+}
+
+int FixPeridemVelocityHistory::maxsize_restart()
+{
+  return NVALUES + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixPeridemVelocityHistory::pack_forward_comm(int n, int *list, double *buf, int, int *)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < 3; d++) buf[m++] = vhalf[list[k]][d];
+  return m;
+}
+
+void FixPeridemVelocityHistory::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < 3; d++) vhalf[i][d] = buf[m++];
+}
+
+double FixPeridemVelocityHistory::memory_usage()
+{
+  return double(NVALUES) * atom->nmax * sizeof(double);
+}
