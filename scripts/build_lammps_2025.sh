@@ -53,14 +53,14 @@ timed() { # name command...: runs the command with its output in $logs/name.log,
 
 fetch() {
   [ -f "$src/cmake/CMakeLists.txt" ] && return 0
-  if [ ! -f /etc/apt/sources.list.d/peridem-trixie-src.sources ]; then
-    cat >/etc/apt/sources.list.d/peridem-trixie-src.sources <<'EOF'
-Types: deb-src
-URIs: http://deb.debian.org/debian
-Suites: trixie
-Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
-EOF
+  # trixie's source package from the mirror (proxy, key) that serves this machine's own release
+  # (PERIDEM_APT_DIR: a fake apt folder, for unittest/scripts/test_apt_deb_src.sh)
+  local apt="${PERIDEM_APT_DIR:-/etc/apt}" list entry codename
+  list="$apt/sources.list.d/peridem-trixie-src.sources"
+  codename="$(. /etc/os-release 2>/dev/null; echo "${VERSION_CODENAME:-bookworm}")"
+  entry="$("$here/scripts/apt_deb_src.sh" "$apt" "$codename" trixie)" || return 1
+  if [ "$(cat "$list" 2>/dev/null)" != "$entry" ]; then
+    echo "$entry" >"$list"
     apt-get update
   fi
   # the .dsc has answered 404 while the orig tarball downloads: unpack the tarball directly

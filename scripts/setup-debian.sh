@@ -34,16 +34,30 @@ fi
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 
-if [ $need_src -eq 1 ] && ! grep -rqs '^Types:.*deb-src' /etc/apt/sources.list.d/ && \
-   ! grep -qs '^deb-src' /etc/apt/sources.list; then
-  # the source package must come from the same archive as the binary package
-  $SUDO tee /etc/apt/sources.list.d/peridem-deb-src.sources >/dev/null <<'SRC'
-Types: deb-src
-URIs: http://deb.debian.org/debian
-Suites: bookworm bookworm-updates
-Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
-SRC
+# a deb-src entry for the release of this machine, outside the file written below
+# (PERIDEM_APT_DIR: a fake apt folder, for unittest/scripts/test_apt_deb_src.sh)
+apt="${PERIDEM_APT_DIR:-/etc/apt}"
+ours="$apt/sources.list.d/peridem-deb-src.sources"
+codename="$(. /etc/os-release 2>/dev/null; echo "${VERSION_CODENAME:-bookworm}")"
+has_deb_src() {
+  grep -qsE "^deb-src .*[[:space:]]$codename([[:space:]]|$)" "$apt/sources.list" "$apt"/sources.list.d/*.list &&
+    return 0
+  local f
+  for f in "$apt"/sources.list.d/*.sources; do
+    [ "$f" != "$ours" ] || continue
+    grep -qsiE '^Types:.*deb-src' "$f" && grep -qsiE "^Suites:.*[[:space:]]$codename([[:space:]]|$)" "$f" &&
+      return 0
+  done
+  return 1
+}
+if [ $need_src -eq 1 ] && ! has_deb_src; then
+  # the source package must come from the same archive as the binary packages (a mirror,
+  # a proxy): the deb-src entry repeats the URIs, components and key of the deb entries
+  src_entry="$("$here/scripts/apt_deb_src.sh" "$apt" "$codename $codename-updates")" || {
+    echo "peridem setup: cannot add the deb-src entry for the LAMMPS source package" >&2; exit 1; }
+  if [ "$(cat "$ours" 2>/dev/null)" != "$src_entry" ]; then
+    echo "$src_entry" | $SUDO tee "$ours" >/dev/null
+  fi
 fi
 
 export DEBIAN_FRONTEND=noninteractive

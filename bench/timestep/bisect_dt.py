@@ -122,7 +122,7 @@ if a.check > 0.0:
                   (case, factor * crit, factor, crit, "stable" if ok else "unstable", note))
             failed |= ok != want
     print("PERIDEM-FAIL" if failed else "PERIDEM-PASS")
-    raise SystemExit(0)
+    raise SystemExit(1 if failed else 0)
 
 print("| case | estimate: recommended | critical | last stable dt | first unstable dt | "
       "threshold / critical |")

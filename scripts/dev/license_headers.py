@@ -14,9 +14,9 @@
 Idempotent: a file that already carries the header (its SPDX line within the first
 20 lines) is left alone. C++ files get the LAMMPS-style block comment (headers keep
 LAMMPS's "-*- c++ -*-" mode line on the first line); shell, Python and CMake files a
-'#' block after any "#!" line. --check exits 0 when every file has it, 77 when no file
-has it yet (the header commit has not been applied: ctest reports the test as
-skipped), 1 when only some have it (listing those without).
+'#' block after any "#!" line. --check exits 0 when every file has it, 1 when any file
+lacks it (listing those) or when there is no source file at all (a wrong REPO_ROOT), so
+that the check fails if every header disappears.
 """
 import pathlib
 import sys
@@ -86,13 +86,12 @@ def main(argv):
     files = sources(root)
     missing = [f for f in files if not has_header(f.read_text(encoding="utf-8"))]
     if check:
+        if not files:
+            print("PERIDEM-FAIL no source file under %s" % root)
+            return 1
         if not missing:
             print("PERIDEM-PASS licence header in all %d source files" % len(files))
             return 0
-        if len(missing) == len(files):
-            print("no source file has the licence header yet (scripts/dev/apply_mechanical.sh "
-                  "has not been applied): skipped")
-            return 77
         for f in missing:
             print("missing licence header: %s" % f.relative_to(root))
         print("PERIDEM-FAIL %d of %d source files without the licence header "

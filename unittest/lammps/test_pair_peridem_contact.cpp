@@ -18,6 +18,7 @@
 
 #include "atom.h"
 #include "force.h"
+#include "group.h"
 #include "input.h"
 #include "lammps.h"
 #include "pair.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <mpi.h>
@@ -81,6 +83,52 @@ double max_force(const std::map<tagint, std::array<double, 2>> &f)
   return m;
 }
 
+// A disk grain (73 nodes) cut through its middle by cut_peridem_bonds: two pieces of one grain,
+// held together by their own bonds, thrown at each other at relative speed 2
+const double kThrownRc = 0.095;
+std::string thrown_halves(const std::string &self)
+{
+  return "units lj\ndimension 2\nboundary f f p\natom_style peridem\natom_modify map array\n"
+         "comm_modify vel yes\nregion box block -2 2 -2 2 -0.5 0.5 units box\n"
+         "create_box 1 box bond/types 1 extra/bond/per/atom 40 extra/special/per/atom 60\n"
+         "special_bonds lj/coul 0.0 1.0 1.0\n"
+         "create_peridem_grains 1 disk radius 0.5 spacing 0.1 horizon 0.3 density 1 at 0 0 0\n"
+         "bond_style peridem break off\nbond_coeff 1 E 1000 Gc 1 horizon 0.3\n"
+         "cut_peridem_bonds all segment 0.05 -0.6 0.05 0.6\n"
+         "region lhalf block INF 0.05 INF INF INF INF units box\ngroup left region lhalf\n"
+         "group right subtract all left\npair_style peridem/contact self " +
+         self + "\npair_coeff * * Kn $(18*1000/(PI*0.3^5)) Rc " + std::to_string(kThrownRc) +
+         "\nvelocity left set 1 0 0 units box\nvelocity right set -1 0 0 units box\n"
+         "fix integrate all nve\nfix plane all enforce2d\ntimestep 0.0004\nrun 0\n";
+}
+
+// the smallest distance between a node of group a and a node of group b, on all ranks
+double min_distance(LAMMPS *lmp, const char *a, const char *b)
+{
+  const int ma = lmp->group->bitmask[lmp->group->find(a)];
+  const int mb = lmp->group->bitmask[lmp->group->find(b)];
+  std::vector<double> mine; // x, y, 0 (a) or 1 (b)
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    const int m = lmp->atom->mask[i];
+    if (m & (ma | mb))
+      mine.insert(mine.end(), {lmp->atom->x[i][0], lmp->atom->x[i][1], (m & ma) ? 0.0 : 1.0});
+  }
+  int nprocs = 1, n = static_cast<int>(mine.size());
+  MPI_Comm_size(lmp->world, &nprocs);
+  std::vector<int> counts(nprocs), offsets(nprocs, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
+  for (int p = 1; p < nprocs; p++) offsets[p] = offsets[p - 1] + counts[p - 1];
+  std::vector<double> all(offsets[nprocs - 1] + counts[nprocs - 1]);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                 lmp->world);
+  double best = INFINITY;
+  for (size_t i = 0; i < all.size(); i += 3)
+    for (size_t j = 0; j < all.size(); j += 3)
+      if (all[i + 2] == 0.0 && all[j + 2] == 1.0)
+        best = std::min(best, std::hypot(all[i] - all[j], all[i + 1] - all[j + 1]));
+  return best;
+}
+
 class PairPeridemContactTest : public LammpsTest,
                                public ::testing::WithParamInterface<const char *> {
  protected:
@@ -131,7 +179,10 @@ TEST_P(PairPeridemContactTest, ForcesAreMinusEnergyGradient)
 
 INSTANTIATE_TEST_SUITE_P(Newton, PairPeridemContactTest, ::testing::Values("on", "off"));
 
-// self-contact acts in this configuration (the finite differences cover it)
+// self-contact acts in the configuration of the finite differences (it adds energy), and it
+// keeps the pieces of a cut grain apart: the thrown halves come no closer than 0.8 R_c with it
+// (smallest distance over 500 steps, every 5th step: 0.85 R_c measured) and pass through each
+// other without it (nodes of the two lattices meet: 1e-15 measured)
 TEST_F(LammpsTest, PairPeridemContactSelfContactActs)
 {
   command(setup("on", "yes"));
@@ -142,6 +193,22 @@ TEST_F(LammpsTest, PairPeridemContactSelfContactActs)
   MPI_Allreduce(local, all, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   EXPECT_GT(all[0], 1.0001 * all[1]);
   EXPECT_GT(all[1], 0.0);
+
+  std::map<std::string, double> closest;
+  for (const char *self : {"yes", "no"}) {
+    command("clear");
+    command(thrown_halves(self));
+    double d = min_distance(lmp, "left", "right");
+    for (int k = 0; k < 100; k++) {
+      command("run 5 pre no post no");
+      d = std::min(d, min_distance(lmp, "left", "right"));
+    }
+    closest[self] = d / kThrownRc;
+  }
+  std::printf("smallest distance between the halves / R_c: self yes %.4g, self no %.4g\n",
+              closest["yes"], closest["no"]);
+  EXPECT_GT(closest["yes"], 0.8);
+  EXPECT_LT(closest["no"], 0.1);
 }
 
 // newton_pair off: the same forces as newton_pair on

@@ -7,7 +7,7 @@
 # version 2; see the LICENSE file in the top-level PERIDEM directory.
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
-# run_example.sh LMP EXAMPLE_DIR INPUT OUT_DIR NP [NP...]
+# run_example.sh LMP EXAMPLE_DIR INPUT OUT_DIR NP NP [NP...]
 # Runs the example once per rank count, each in a fresh copy of the example
 # directory, and requires the thermo output of every run to equal that of the
 # first run (numerically, to 1e-9 relative, see thermo_compare.py).

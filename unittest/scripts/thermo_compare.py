@@ -7,7 +7,7 @@
 # version 2; see the LICENSE file in the top-level PERIDEM directory.
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
-"""thermo_compare.py LOG [LOG...]: the thermo tables of every log must equal
+"""thermo_compare.py LOG LOG [LOG...]: the thermo tables of every log must equal
 those of the first log, value by value, to a relative tolerance (default
 1e-9, --rtol) with an absolute floor (--atol, default 1e-12). Exits 1 with
 the first difference otherwise. Used to check that a run on N MPI ranks
@@ -41,6 +41,8 @@ def main():
     ap.add_argument("--rtol", type=float, default=1e-9)
     ap.add_argument("--atol", type=float, default=1e-12)
     a = ap.parse_args()
+    if len(a.logs) < 2:  # a log compared with itself would pass whatever it holds
+        sys.exit(f"FAIL: {len(a.logs)} log given: compare two or more")
     ref = thermo_tables(a.logs[0])
     if not ref or not any(rows for _, rows in ref):
         sys.exit(f"FAIL: no thermo output in {a.logs[0]}")

@@ -51,10 +51,9 @@ peridem_bond_error(lps_dilation_needs_lps bond_cases.data lps_dilation_needs_lps
 
 # a material file gives K, G, Gc, horizon and the influence function
 add_test(NAME bond_lps_material
-  COMMAND lmp_peridem -in ${_in}/bond_error.in -log none -var inputs ${_in}
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex PERIDEM-LPS-OK
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/bond_error.in -log none -var inputs ${_in}
           -var data bond_cases.data -var case lps_ok.lmp -var potentials ${PROJECT_SOURCE_DIR}/potentials)
-set_tests_properties(bond_lps_material PROPERTIES
-  PASS_REGULAR_EXPRESSION "PERIDEM-LPS-OK" FAIL_REGULAR_EXPRESSION "ERROR")
 
 # in.peri.lps rebuilt with bond_style peridem/lps (a smaller target, a slower
 # indenter that still breaks bonds): 1, 2 and 4 ranks, newton_bond on and
@@ -79,9 +78,7 @@ set_tests_properties(example.peri_lps_impact_ranks PROPERTIES TIMEOUT 600
 # broken bonds, the grains dilate on contact; 1 and 2 ranks
 foreach(_np 1 2)
   add_test(NAME bond_lps_grains_np${_np}
-    COMMAND ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem> -in ${_in}/lps_grains.in
-            -log none -echo none -var potentials ${PROJECT_SOURCE_DIR}/potentials
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${_in}/lps_grains.in -log none -echo none -var potentials ${PROJECT_SOURCE_DIR}/potentials
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-  set_tests_properties(bond_lps_grains_np${_np} PROPERTIES
-    PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|ERROR")
 endforeach()

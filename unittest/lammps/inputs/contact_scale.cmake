@@ -38,30 +38,29 @@ foreach(_case "2;;1.833464944418[0-9]*e\\+23 \\(Kn_form eps4: 18 k/\\(pi eps\\^4
   list(GET _case 2 _regex)
   string(REPLACE " " "_" _tag "${_dim}d${_form}")
   add_test(NAME contact_kn_form_log_${_tag}
-    COMMAND lmp_peridem -in ${_cs} -log none -echo none -var dim ${_dim} -var units si
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "fix peridem/wall wall: Kn = ${_regex}"
+            $<TARGET_FILE:lmp_peridem> -in ${_cs} -log none -echo none -var dim ${_dim} -var units si
             -var coeff "* * ${_gs} Rc 1 ${_form}" -var wall "xlo -1 ${_gs} Rc 1 ${_form}")
-  set_tests_properties(contact_kn_form_log_${_tag} PROPERTIES
-    PASS_REGULAR_EXPRESSION "fix peridem/wall wall: Kn = ${_regex}" FAIL_REGULAR_EXPRESSION "ERROR")
 endforeach()
 
 # start-up checks: a node already within Rc of a wall (warning with the count and grain),
 # a node wholly beyond a wall at the first step (an error naming the placement, not the time
 # step), and the neighbour skin that overflows LAMMPS's list (warning with a skin that fits)
 add_test(NAME contact_startup_wall_overlap_warns
-  COMMAND lmp_peridem -in ${_cs} -log none -echo none -var wall "ylo 0.8 Kn 1 Rc 0.5")
-set_tests_properties(contact_startup_wall_overlap_warns PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: fix peridem/wall wall: 1 nodes and walls are closer than the contact radius Rc = 0.5 at the first step \\(e.g. grain 1 / wall ylo\\)"
-  FAIL_REGULAR_EXPRESSION "ERROR")
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "WARNING: fix peridem/wall wall: 1 nodes and walls are closer than the contact radius Rc = 0.5 at the first step \\(e.g. grain 1 / wall ylo\\)"
+          $<TARGET_FILE:lmp_peridem> -in ${_cs} -log none -echo none -var wall "ylo 0.8 Kn 1 Rc 0.5")
 add_test(NAME contact_startup_grain_overlap_warns
-  COMMAND lmp_peridem -in ${_in}/contact_startup.in -log none -echo none)
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "WARNING: pair_style peridem/contact: [0-9]+ node pairs of different grains are closer than the contact radius Rc = 0.3 at the first step \\(e.g. grain 1 / grain 2"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_startup.in -log none -echo none)
 set_tests_properties(contact_startup_grain_overlap_warns PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: [0-9]+ node pairs of different grains are closer than the contact radius Rc = 0.3 at the first step \\(e.g. grain 1 / grain 2"
-  FAIL_REGULAR_EXPRESSION "ERROR|grain 1 / grain 3")
+  FAIL_REGULAR_EXPRESSION "grain 1 / grain 3")
+# the warning, then LAMMPS's own error
 add_test(NAME contact_startup_skin_overflow_warns
-  COMMAND lmp_peridem -in ${_in}/contact_startup.in -log none -echo none -var skin 10 -var big 1)
-set_tests_properties(contact_startup_skin_overflow_warns PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: the neighbour list reaches 10.3 \\(cutoff 0.3 \\+ neighbor skin 10\\).*more than neigh_modify one 2000.*ERROR.*Neighbor list overflow"
-  TIMEOUT 60)
+  COMMAND ${PERIDEM_RUN}/expect_error.sh
+          --warning "pair_style peridem/contact: the neighbour list reaches 10.3 \\(cutoff 0.3 \\+ neighbor skin 10\\).*more than neigh_modify one 2000"
+          "Neighbor list overflow"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_startup.in -log none -echo none -var skin 10 -var big 1)
+set_tests_properties(contact_startup_skin_overflow_warns PROPERTIES TIMEOUT 60)
 
 # Bhattacharya & Lipton's (2023) bed (Sec. 7.3: M2, eps = 0.5 mm, h = eps/8, R_c = eps/5, mu = 0.8,
 # r_d = 0.8, g = 5000 m/s^2) at its time step 70 ns, reduced to 4 grains of radius
@@ -74,25 +73,26 @@ set(_small -var nx 2 -var ny 2 -var rmin 2e-4 -var rmax 2.5e-4 -var chunk 500
 # <name>_eps4_settles and <name>_eps5_unstable for the bed of in.bed with the given variables
 function(peridem_bed_pair name)
   add_test(NAME ${name}_eps4_settles
-    COMMAND lmp_peridem -in ${_bed} -log none -echo none ${ARGN} -var maxsteps 60000
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex PERIDEM-SETTLED
+            $<TARGET_FILE:lmp_peridem> -in ${_bed} -log none -echo none ${ARGN} -var maxsteps 60000
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-  set_tests_properties(${name}_eps4_settles PROPERTIES PASS_REGULAR_EXPRESSION "PERIDEM-SETTLED"
-    FAIL_REGULAR_EXPRESSION "PERIDEM-UNSTABLE|PERIDEM-NOT-SETTLED|ERROR|exceeds the recommended"
-    TIMEOUT 300)
+  set_tests_properties(${name}_eps4_settles PROPERTIES
+    FAIL_REGULAR_EXPRESSION "PERIDEM-UNSTABLE|PERIDEM-NOT-SETTLED|exceeds the recommended" TIMEOUT 300)
   add_test(NAME ${name}_eps5_unstable
-    COMMAND lmp_peridem -in ${_bed} -log none -echo none ${ARGN} -var kn_form eps5
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "PERIDEM-UNSTABLE at step"
+            $<TARGET_FILE:lmp_peridem> -in ${_bed} -log none -echo none ${ARGN} -var kn_form eps5
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
   set_tests_properties(${name}_eps5_unstable PROPERTIES
-    PASS_REGULAR_EXPRESSION "PERIDEM-UNSTABLE at step"
     FAIL_REGULAR_EXPRESSION "PERIDEM-SETTLED|PERIDEM-NOT-SETTLED" TIMEOUT 300)
 endfunction()
 peridem_bed_pair(bed_gs_70ns ${_small})
 add_test(NAME bed_gs_70ns_eps5_warns
-  COMMAND lmp_peridem -in ${_bed} -log none -echo none ${_small} -var kn_form eps5 -var maxsteps 0
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh
+          --regex "WARNING: pair_style peridem/contact: time step 7e-08 exceeds the recommended"
+          $<TARGET_FILE:lmp_peridem> -in ${_bed} -log none -echo none ${_small} -var kn_form eps5
+          -var maxsteps 0
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-set_tests_properties(bed_gs_70ns_eps5_warns PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: time step 7e-08 exceeds the recommended"
-  TIMEOUT 120)
+set_tests_properties(bed_gs_70ns_eps5_warns PROPERTIES TIMEOUT 120)
 
 # the time-step estimate against the measured stability threshold on Jha et al.'s (2021)
 # two-particle drop (h = 0.1423 mm, damping centroid 0.8 100), with K_n eps^5 (its Table 2)
@@ -102,8 +102,7 @@ add_test(NAME timestep_estimate_vs_threshold_drop
   COMMAND python3 ${PROJECT_SOURCE_DIR}/bench/timestep/bisect_dt.py
           --lmp $<TARGET_FILE:lmp_peridem> --cases rest5,rest4 --check 2.0)
 set_tests_properties(timestep_estimate_vs_threshold_drop PROPERTIES
-  PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|Traceback"
-  TIMEOUT 300)
+  FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|Traceback" TIMEOUT 300)
 
 # the estimate against thresholds the test measures itself, on Bhattacharya & Lipton's (2023) small
 # bed (walls, damping 0.8, friction 0.8): eps5 (contact-limited: node pairs and walls), eps4
@@ -116,8 +115,7 @@ add_test(NAME timestep_estimate_vs_threshold_bed
   COMMAND python3 ${PROJECT_SOURCE_DIR}/bench/timestep/bisect_dt.py
           --lmp $<TARGET_FILE:lmp_peridem> --cases bed5,bed4,bed4lps --check 2.0)
 set_tests_properties(timestep_estimate_vs_threshold_bed PROPERTIES
-  PASS_REGULAR_EXPRESSION "PERIDEM-PASS" FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|Traceback"
-  TIMEOUT 300)
+  FAIL_REGULAR_EXPRESSION "PERIDEM-FAIL|Traceback" TIMEOUT 300)
 
 # a 20-grain bed (5 x 4 security disks, radii 0.2-0.3 mm, 996 nodes) with the Sec. 7.3
 # parameters at 70 ns: settles (kinetic energy 100x below its peak, step 28,000 when written),
@@ -129,7 +127,8 @@ peridem_bed_pair(bed20_gs_70ns ${_bed20})
 # the neighbour overflow seen with sub-mm spacings: a 3d grain at h = 0.04 mm with LAMMPS's SI
 # default skin (1 mm) overflows; the warning comes first and names a skin that fits
 add_test(NAME contact_startup_skin_overflow_warns_3d_si
-  COMMAND lmp_peridem -in ${_in}/contact_skin_3d_si.in -log none -echo none)
-set_tests_properties(contact_startup_skin_overflow_warns_3d_si PROPERTIES
-  PASS_REGULAR_EXPRESSION "WARNING: pair_style peridem/contact: the neighbour list reaches 0.001038 \\(cutoff 3.8e-05 \\+ neighbor skin 0.001\\).*Use a smaller skin \\(neighbor 0.000[0-9]+ bin.*ERROR.*Neighbor list overflow"
-  TIMEOUT 120)
+  COMMAND ${PERIDEM_RUN}/expect_error.sh
+          --warning "pair_style peridem/contact: the neighbour list reaches 0.001038 \\(cutoff 3.8e-05 \\+ neighbor skin 0.001\\).*Use a smaller skin \\(neighbor 0.000[0-9]+ bin"
+          "Neighbor list overflow"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_skin_3d_si.in -log none -echo none)
+set_tests_properties(contact_startup_skin_overflow_warns_3d_si PROPERTIES TIMEOUT 120)

@@ -41,10 +41,10 @@ peridem_add_example_test(contact_friction contact-friction in.incline 1 2)
 
 # (2) self-contact: the halves of a cut grain bounce off each other; the
 # arms of a crushed X-shaped grain do not interpenetrate; a grain torn apart
-# during the run (1 and 2 ranks) keeps its pieces apart. fix halt ends the
-# run with an error when nodes of two pieces come closer than Rc/2 ...
-peridem_add_example_test(contact_cut_pieces contact-self in.cut_pieces 1)
-peridem_add_example_test(contact_plus_crush contact-self in.plus_crush 1)
+# during the run keeps its pieces apart; each the same on 1 and 2 ranks. fix halt
+# ends the run with an error when nodes of two pieces come closer than Rc/2 ...
+peridem_add_example_test(contact_cut_pieces contact-self in.cut_pieces 1 2)
+peridem_add_example_test(contact_plus_crush contact-self in.plus_crush 1 2)
 peridem_add_example_test(contact_break_apart contact-self in.break_apart 1 2)
 # ... which happens with "pair_style peridem/contact self no": the checks can fail
 foreach(_input cut_pieces plus_crush break_apart)
