@@ -106,7 +106,7 @@ peridem_catalogue_commands(bed_no_box "create_peridem_bed command before simulat
   -var c1 "${_bed} count 10")
 peridem_catalogue_error(bed_count_value "Illegal create_peridem_bed command: count needs 1 value"
   -var bad "${_bed} count")
-peridem_catalogue_error(bed_count_zero "create_peridem_bed: count must be > 0, got 0"
+peridem_catalogue_error(bed_count_zero "create_peridem_bed: count must be an integer from 1 to 2147483647, not 0"
   -var bad "${_bed} count 0")
 peridem_catalogue_error(bed_seed_zero "create_peridem_bed: seed must be > 0, got 0"
   -var bad "${_bed} count 10 seed 0")
