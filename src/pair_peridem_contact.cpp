@@ -528,6 +528,7 @@ void PairPeridemContact::mix(int i, int j)
                          ? 0.5 * (a.centroid_reach() + b.centroid_reach())
                          : 0.0;
   m.origin = fmt::format("mixed from types {} and {}", i, j);
+  m.kappa_origin = fmt::format("harmonic mean of types {} and {}, Jha et al. 2021 eq. 25", i, j);
   spec[i][j] = spec[j][i] = m;
   if (comm->me == 0)
     utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, i, j, peridem_lmp::describe_contact(m));
@@ -834,7 +835,7 @@ void PairPeridemContact::read_restart(FILE *fp)
       s.centroid = extra[3] != 0.0;
       s.centroid_range = extra[4];
       s.kn_form = extra[5] == 4.0 ? peridem::KnForm::Eps4 : peridem::KnForm::Eps5;
-      s.origin = "restart file";
+      s.origin = s.kappa_origin = "restart file";
       spec[j][i] = s;
     }
 }
