@@ -305,7 +305,7 @@ void ContactParser::set_kappa(ContactSpec &out, int dimension) const
   if (dimension == 2 && !have_form) warn_kappa_from_kn(out);
 }
 
-// The PeriDEM paper's inputs give Kn = 18 K/(pi eps^5) (Jha et al. 2021, eq. 36) with kappa = K.
+// Jha et al.'s (2021) inputs give Kn = 18 K/(pi eps^5) (their eq. 36) with kappa = K.
 // Under the 2d default eps4 (since Nov 2026) the same Kn gives kappa = pi eps^4 Kn/18 = K/eps:
 // a dashpot sqrt(1/eps) times stronger (a drop that bounced then sticks), with no other sign.
 void ContactParser::warn_kappa_from_kn(const ContactSpec &out) const
@@ -314,7 +314,7 @@ void ContactParser::warn_kappa_from_kn(const ContactSpec &out) const
   lmp->error->warning(FLERR,
                       "{}: in 2d an explicit Kn under the default Kn_form eps4 gives the {} "
                       "dashpot kappa = pi eps^4 Kn/18 = {:.6g} (horizon {}); if Kn is 18 K/(pi "
-                      "eps^5), as in the PeriDEM paper's inputs, that is K/eps, not K. Give "
+                      "eps^5), as in Jha et al.'s (2021) inputs, that is K/eps, not K. Give "
                       "Kn_form eps5 (or kappa K) to get kappa = K",
                       command, out.centroid ? "centroid" : "restitution", out.params.kappa_eff,
                       out.horizon);
