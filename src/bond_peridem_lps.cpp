@@ -403,12 +403,19 @@ void BondPeridemLPS::settings(int narg, char **arg)
       if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword plane needs a value", STYLE);
       plane = peridem::LpsPlane(
           peridem_lmp::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
+      plane_given = true;
       continue;
     }
     rest.push_back(arg[iarg]);
     if (iarg + 1 < narg) rest.push_back(arg[iarg + 1]);
   }
   BondPeridem::settings(int(rest.size()), rest.data());
+}
+
+std::string BondPeridemLPS::plane_description() const
+{
+  if (domain->dimension == 3) return "3d";
+  return std::string("plane ") + PLANE[int(plane)];
 }
 
 /* ----------------------------------------------------------------------
@@ -480,9 +487,9 @@ void BondPeridemLPS::coeff(int narg, char **arg)
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "{} type {}: K = {:.10g}, G = {:.10g}, s0 = {:.10g}{}, horizon = {:.10g}, "
-                   "influence {}{}\n",
+                   "influence {}, {}{}\n",
                    STYLE, arg[0], K, G, s0val, a.haveGc ? " (PeriDEM eq. 10)" : "", eps,
-                   INFLUENCE[infl], a.breakable ? "" : ", unbreakable");
+                   INFLUENCE[infl], plane_description(), a.breakable ? "" : ", unbreakable");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -491,6 +498,12 @@ void BondPeridemLPS::init_style()
 {
   BondPeridem::init_style();
   const int dimension = domain->dimension;
+  // checked here, not in settings(): bond_style may come before the dimension command
+  if (dimension == 3 && plane_given && plane != peridem::LpsPlane::ThreeD)
+    error->all(FLERR,
+               "{}: plane {} is a 2d model; a 3d simulation always uses the 3d constants (drop "
+               "the keyword)",
+               STYLE, PLANE[int(plane)]);
   constants.assign(atom->nbondtypes + 1, peridem::LpsConstants());
   for (int i = 1; i <= atom->nbondtypes; i++) {
     if (!setflag[i]) continue;

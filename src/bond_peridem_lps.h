@@ -24,6 +24,8 @@ BondStyle(peridem/lps,BondPeridemLPS);
 #include "bond_peridem.h"
 #include "peridem_lps_law.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 class BondPeridemLPS : public BondPeridem {
@@ -54,6 +56,9 @@ class BondPeridemLPS : public BondPeridem {
   int *influence;
   std::vector<peridem::LpsConstants> constants;
   peridem::LpsPlane plane;
+  bool plane_given = false; // plane strain|stress given (a 3d simulation refuses them)
+  // for the log: "plane strain", "plane stress", "plane 3d" (2d), "3d" (3d)
+  std::string plane_description() const;
   double dfac; // d of theta = (d/m) sum omega beta r e V
 
   // per entry of the bond list, one array per quantity: the dilation pass streams r0, wi and

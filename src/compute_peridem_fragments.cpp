@@ -87,7 +87,11 @@ ComputePeridemFragments::ComputePeridemFragments(LAMMPS *lmp, int narg, char **a
       else
         error->all(FLERR, "Illegal {} command: min {}: expected nodes or volume", STYLE,
                    arg[iarg + 1]);
-      min_size = peridem_lmp::number(lmp, STYLE, "min", arg[iarg + 2]);
+      // a node count is a whole number (2.5 would silently mean 3)
+      min_size =
+          min_kind == NODES
+              ? static_cast<double>(peridem_lmp::integer(lmp, STYLE, "min nodes", arg[iarg + 2]))
+              : peridem_lmp::number(lmp, STYLE, "min", arg[iarg + 2]);
       if (min_size < 0.0)
         error->all(FLERR, "Illegal {} command: min {} {} must not be negative", STYLE,
                    arg[iarg + 1], arg[iarg + 2]);

@@ -76,8 +76,9 @@ void CreatePeridemBed::command(int narg, char **arg)
     auto num = [&](int k) { return peridem_lmp::number(lmp, CMD, key, arg[k]); };
     if (key == "count") {
       need(1, "count");
-      count = peridem_lmp::integer(lmp, CMD, key, arg[iarg++]);
-      if (count <= 0) error->all(FLERR, "{}: count must be > 0, got {}", CMD, count);
+      // every disk becomes a grain of at least one node, and this LAMMPS numbers atoms in
+      // 32 bits (LAMMPS_SMALLBIG): more disks than MAXTAGINT could never be placed
+      count = peridem_lmp::integer(lmp, CMD, key, arg[iarg++], 1, MAXTAGINT);
     } else if (key == "radius") {
       need(1, "radius");
       const std::string style = arg[iarg++];
@@ -203,6 +204,8 @@ void CreatePeridemBed::command(int narg, char **arg)
         grow = false;
         count = static_cast<long long>(p.radius.size());
       } else {
+        // refuse a count the container cannot hold before drawing (and storing) its radii
+        peridem::check_count_fits(dist, static_cast<std::size_t>(count), opt);
         const auto radii = peridem::draw_radii(dist, count, static_cast<std::uint64_t>(seed));
         p = peridem::pack_spheres(radii, opt);
       }
@@ -291,6 +294,6 @@ void CreatePeridemBed::command(int narg, char **arg)
   if (len > 0) error->all(FLERR, "{}: {}", CMD, message);
   if (comm->me == 0) {
     utils::logmesg(lmp, line);
-    utils::logmesg(lmp, "  {} CPU = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
+    utils::logmesg(lmp, "  {} wall time = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
   }
 }

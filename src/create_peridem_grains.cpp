@@ -281,7 +281,8 @@ void CreatePeridemGrains::command(int narg, char **arg)
   }
   place(opt, per_grain);
 
-  if (comm->me == 0) utils::logmesg(lmp, "  {} CPU = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "  {} wall time = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
 }
 
 /* ----------------------------------------------------------------------

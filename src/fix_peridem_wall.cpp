@@ -728,6 +728,13 @@ double FixPeridemWall::compute_scalar()
   return total[ENERGY];
 }
 
+void *FixPeridemWall::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "peridem_wall_contact") != 0 || contact_from_pair) return nullptr;
+  return &contact.params;
+}
+
 double FixPeridemWall::compute_vector(int n)
 {
   if (n < PER_WALL * nwalls) {

@@ -57,6 +57,9 @@ class FixPeridemWall : public Fix {
   void restart(char *) override;
   void setup_pre_exchange() override;
   void pre_exchange() override;
+  // "peridem_wall_contact": the walls' own contact law (peridem::ContactParams, dim 0), or
+  // nullptr with 'contact pair' (then the walls use the pair's); for the pair's time step
+  void *extract(const char *, int &) override;
 
   // 'lost delete': nodes beyond a wall or a fixed box boundary are deleted
   int deletes_lost() const { return lost_delete; }

@@ -157,6 +157,11 @@ int ContactParser::consume_one(int narg, char **arg, int iarg)
     lmp->error->all(FLERR, "{}: damping must be none, nodal, restitution or centroid, not {}",
                     command, mode);
   }
+  if (key == "kappa") {
+    kappa = positive(narg, arg, iarg + 1, "kappa");
+    have_kappa = true;
+    return 2;
+  }
   if (key == "centroid_range") {
     if (!centroid_allowed)
       lmp->error->all(FLERR,
@@ -240,14 +245,7 @@ ContactSpec ContactParser::finish(int dimension) const
     p.Rc = rc_factor * spacing;
   }
 
-  if (p.damping == peridem::ContactDamping::Restitution || out.centroid) {
-    if (!(out.bulk_modulus > 0.0))
-      error->all(FLERR,
-                 "{}: damping {} needs the bulk modulus: use 'material FILE NAME', or give "
-                 "'horizon eps' with Kn",
-                 command, out.centroid ? "centroid" : "restitution");
-    p.kappa_eff = out.bulk_modulus;
-  }
+  set_kappa(out, dimension);
 
   if (out.centroid_range > 0.0) {
     if (!out.centroid)
@@ -268,6 +266,58 @@ ContactSpec ContactParser::finish(int dimension) const
     error->all(FLERR, "{}: {}", command, e.what());
   }
   return out;
+}
+
+/* ----------------------------------------------------------------------
+   kappa_eff of the restitution and centroid dashpots (Jha et al. 2021,
+   eq. 23, 25, 28): the bulk modulus k behind K_n, or kappa given
+------------------------------------------------------------------------- */
+
+void ContactParser::set_kappa(ContactSpec &out, int dimension) const
+{
+  peridem::ContactParams &p = out.params;
+  Error *error = lmp->error;
+  if (p.damping != peridem::ContactDamping::Restitution && !out.centroid) {
+    if (have_kappa)
+      error->all(FLERR,
+                 "{}: kappa {:g} needs damping restitution or centroid (it sets their dashpot)",
+                 command, kappa);
+    return;
+  }
+  if (have_kappa) {
+    p.kappa_eff = kappa;
+    out.kappa_origin = "kappa given";
+    return;
+  }
+  if (!(out.bulk_modulus > 0.0))
+    error->all(FLERR,
+               "{}: damping {} needs the bulk modulus: use 'material FILE NAME', or give "
+               "'horizon eps' with Kn, or 'kappa k'",
+               command, out.centroid ? "centroid" : "restitution");
+  p.kappa_eff = out.bulk_modulus;
+  if (have_material) {
+    out.kappa_origin = "bulk modulus of " + out.origin;
+    return;
+  }
+  out.kappa_origin = fmt::format("pi eps^{} Kn/18 from Kn, horizon {} and Kn_form {}",
+                                 peridem::kn_exponent(out.kn_form), out.horizon,
+                                 peridem::kn_form_name(out.kn_form));
+  if (dimension == 2 && !have_form) warn_kappa_from_kn(out);
+}
+
+// Jha et al.'s (2021) inputs give Kn = 18 K/(pi eps^5) (their eq. 36) with kappa = K.
+// Under the 2d default eps4 (since Nov 2026) the same Kn gives kappa = pi eps^4 Kn/18 = K/eps:
+// a dashpot sqrt(1/eps) times stronger (a drop that bounced then sticks), with no other sign.
+void ContactParser::warn_kappa_from_kn(const ContactSpec &out) const
+{
+  if (lmp->comm->me != 0) return;
+  lmp->error->warning(FLERR,
+                      "{}: in 2d an explicit Kn under the default Kn_form eps4 gives the {} "
+                      "dashpot kappa = pi eps^4 Kn/18 = {:.6g} (horizon {}); if Kn is 18 K/(pi "
+                      "eps^5), as in Jha et al.'s (2021) inputs, that is K/eps, not K. Give "
+                      "Kn_form eps5 (or kappa K) to get kappa = K",
+                      command, out.centroid ? "centroid" : "restitution", out.params.kappa_eff,
+                      out.horizon);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -291,6 +341,24 @@ std::string describe_kn_form(peridem::KnForm form)
                                        : "Kn_form eps5: 18 k/(pi eps^5)";
 }
 
+namespace {
+// ", kappa = ... (origin), beta = B sqrt(m_eq) (...)": beta of eq. 23 (nodes) or 28 (grain
+// centres) per square root of the mass m_eq, which is known only in contact
+std::string describe_dashpot(const ContactSpec &spec)
+{
+  const peridem::ContactParams &p = spec.params;
+  const double per_sqrt_mass =
+      peridem::restitution_damping_coefficient(p.eps_n, p.C, p.kappa_eff, p.Rc, 1.0);
+  return fmt::format(", kappa = {:.6g} ({}), beta = {:.6g} sqrt({}) (2 C zeta sqrt(kappa Rc {}), "
+                     "zeta = {:.6g} from eps_n, Jha et al. 2021 eq. {}; {})",
+                     p.kappa_eff, spec.kappa_origin, per_sqrt_mass, spec.centroid ? "M_eq" : "m_eq",
+                     spec.centroid ? "M_eq" : "m_eq",
+                     peridem::damping_ratio_from_restitution(p.eps_n), spec.centroid ? 28 : 23,
+                     spec.centroid ? "M_eq = harmonic mean of the two grain masses"
+                                   : "m_eq = harmonic mean of the two node masses, 2 m at a wall");
+}
+} // namespace
+
 std::string describe_contact(const ContactSpec &spec)
 {
   const peridem::ContactParams &p = spec.params;
@@ -302,6 +370,8 @@ std::string describe_contact(const ContactSpec &spec)
   if (spec.centroid)
     damping = fmt::format("centroid eps_n = {} C = {} (grains touch below {})", p.eps_n, p.C,
                           spec.centroid_reach());
+  if (spec.centroid || p.damping == peridem::ContactDamping::Restitution)
+    damping += describe_dashpot(spec);
   std::string friction = "none";
   if (p.friction == peridem::ContactFriction::Regularized)
     friction = fmt::format("regularized mu = {}", p.mu);

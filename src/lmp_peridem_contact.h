@@ -30,6 +30,8 @@
                              Jha et al. 2021, eq. 26-30; pair_style peridem/contact only)
      centroid_range D        damping centroid acts while two nodes of the
                              grains are closer than D >= R_c (default R_c)
+     kappa k                 the dashpot's kappa (eq. 23, 28) given directly,
+                             instead of the bulk modulus behind K_n
      friction none | regularized mu | coulomb mu
 
    Exactly one of material / Kn, and one of Rc / Rc_factor are required.
@@ -59,6 +61,8 @@ struct ContactSpec {
   // K_n = 18 k/(pi eps^p): p = 4 (2D default) or 5 (3D, or Kn_form eps5)
   peridem::KnForm kn_form = peridem::KnForm::Eps5;
   std::string origin; // for the log, e.g. "material M1 of file"
+  // where the restitution/centroid dashpot's kappa (params.kappa_eff) came from, for the log
+  std::string kappa_origin;
   // damping centroid eps_n C: a dashpot between the centres of two grains in
   // contact (Jha et al. 2021, eq. 26-30), applied by pair_style peridem/contact.
   // params.damping is then None (no nodal dashpot) and params.eps_n, C and
@@ -97,16 +101,19 @@ class ContactParser {
   std::string command;
   ContactSpec spec;
   bool have_material = false, have_kn = false, have_rc = false, have_factor = false;
-  bool have_form = false;
+  bool have_form = false, have_kappa = false;
   bool centroid_allowed = false;
   int consumed = 0;
   double material_k = 0.0, material_horizon = 0.0, material_E = 0.0;
-  double horizon = 0.0, rc_factor = 0.0, spacing = 0.0;
+  double horizon = 0.0, rc_factor = 0.0, spacing = 0.0, kappa = 0.0;
 
   int consume_one(int narg, char **arg, int iarg);
   // arg[iarg] as a number (error if missing), and as a number > 0
   double number(int narg, char **arg, int iarg, const char *what) const;
   double positive(int narg, char **arg, int iarg, const char *what) const;
+  // kappa of the restitution/centroid dashpot, and where it came from
+  void set_kappa(ContactSpec &out, int dimension) const;
+  void warn_kappa_from_kn(const ContactSpec &out) const;
 };
 
 // All of arg[0..narg-1] must be contact keywords (pair_coeff after the types).
@@ -116,7 +123,8 @@ ContactSpec parse_contact(LAMMPS_NS::LAMMPS *lmp, const std::string &command, in
 // "Kn_form eps4: 18 k/(pi eps^4), 2d per unit thickness" (or eps5), for the log
 std::string describe_kn_form(peridem::KnForm form);
 
-// One line for the log: "Kn = ..., Rc = ..., damping ..., friction ...".
+// One line for the log: "Kn = ..., Rc = ..., damping ..., friction ..."; with restitution or
+// centroid damping also kappa and beta (per square root of m_eq) and where they came from.
 std::string describe_contact(const ContactSpec &spec);
 
 } // namespace peridem_lmp

@@ -34,7 +34,10 @@ namespace peridem_lmp {
 void OverlapReport::add(tagint grain, const std::string &partner)
 {
   count++;
-  if (examples.size() < 8) examples.push_back(fmt::format("grain {} / {}", grain, partner));
+  // a grain through a wall has many nodes near it: name each grain / partner once
+  std::string example = fmt::format("grain {} / {}", grain, partner);
+  if (examples.size() < 8 && std::find(examples.begin(), examples.end(), example) == examples.end())
+    examples.push_back(std::move(example));
 }
 
 bigint OverlapReport::total(LAMMPS *lmp) const

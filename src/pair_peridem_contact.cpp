@@ -34,6 +34,7 @@
 #include "lmp_peridem_bond_loop.h"
 #include "lmp_peridem_image.h"
 #include "error.h"
+#include "fix.h"
 #include "force.h"
 #include "memory.h"
 #include "modify.h"
@@ -535,6 +536,7 @@ void PairPeridemContact::mix(int i, int j)
                          ? 0.5 * (a.centroid_reach() + b.centroid_reach())
                          : 0.0;
   m.origin = fmt::format("mixed from types {} and {}", i, j);
+  m.kappa_origin = fmt::format("harmonic mean of types {} and {}, Jha et al. 2021 eq. 25", i, j);
   spec[i][j] = spec[j][i] = m;
   if (comm->me == 0)
     utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, i, j, peridem_lmp::describe_contact(m));
@@ -670,6 +672,7 @@ void PairPeridemContact::report_time_step()
   auto *bonds = dynamic_cast<BondPeridem *>(force->bond);
   const std::vector<double> bond_omega2 =
       bonds ? bonds->stability_omega2_of_types() : std::vector<double>(nt + 1, 0.0);
+  const std::vector<std::array<double, 2>> wall_laws = own_wall_laws();
 
   peridem::TimeStepEstimate overall;
   std::string lines;
@@ -687,6 +690,7 @@ void PairPeridemContact::report_time_step()
       in.rho = std::min(a[2], b[2]);
       in.bond_omega2 = std::max(bond_omega2[i], bond_omega2[j]);
       in.walls = peridem_lmp::has_fix_style(modify, "^peridem/wall");
+      in.wall_laws = wall_laws;
       in.Kn = p.Kn;
       in.Rc = p.Rc;
       in.damping_ratio = p.damping == peridem::ContactDamping::Nodal
@@ -705,6 +709,7 @@ void PairPeridemContact::report_time_step()
                            "for contacts shallower than {:.3g})\n",
                            STYLE, i, j, est.dt_recommended, est.dt_critical, est.dt_bond,
                            est.dt_contact, in.damping_ratio, est.n_contacts, est.shallow_depth);
+      if (!wall_laws.empty()) lines.insert(lines.size() - 2, wall_law_note(wall_laws));
       if (est.dt_recommended < overall.dt_recommended) overall = est;
     }
   if (comm->me != 0 || lines.empty()) return;
@@ -720,6 +725,34 @@ void PairPeridemContact::report_time_step()
   if (update->dt > overall.dt_recommended)
     error->warning(FLERR, "{}: time step {} exceeds the recommended {:.4g}", STYLE, update->dt,
                    overall.dt_recommended);
+}
+
+/* ----------------------------------------------------------------------
+   {Kn, Rc} of each fix peridem/wall with a contact law of its own (not
+   'contact pair'): a wall stiffer than the pair's contact sets the contact
+   part of the time step (TimeStepInput::wall_laws)
+------------------------------------------------------------------------- */
+
+std::vector<std::array<double, 2>> PairPeridemContact::own_wall_laws() const
+{
+  std::vector<std::array<double, 2>> laws;
+  for (int i = 0; i < modify->nfix; i++) {
+    if (!utils::strmatch(modify->fix[i]->style, "^peridem/wall")) continue;
+    int dim = 0;
+    const auto *p = static_cast<const peridem::ContactParams *>(
+        modify->fix[i]->extract("peridem_wall_contact", dim));
+    if (p) laws.push_back({p->Kn, p->Rc});
+  }
+  return laws;
+}
+
+// "; walls with their own law: Kn = ..., Rc = ...", for the time-step line
+std::string PairPeridemContact::wall_law_note(const std::vector<std::array<double, 2>> &laws)
+{
+  std::string note = "; walls with their own law:";
+  for (const auto &w : laws) note += fmt::format(" Kn = {:.4g}, Rc = {:.4g};", w[0], w[1]);
+  note.pop_back();
+  return note;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -769,7 +802,7 @@ void PairPeridemContact::read_restart(FILE *fp)
       s.centroid = extra[3] != 0.0;
       s.centroid_range = extra[4];
       s.kn_form = extra[5] == 4.0 ? peridem::KnForm::Eps4 : peridem::KnForm::Eps5;
-      s.origin = "restart file";
+      s.origin = s.kappa_origin = "restart file";
       spec[j][i] = s;
     }
 }

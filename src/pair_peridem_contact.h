@@ -68,7 +68,9 @@ class PairPeridemContact : public Pair {
   void allocate();
   void mix(int i, int j);
   void report_time_step();
-  // per atom type: max over its nodes of 2 lambda_max(A_i)/m_i of their bonds
+  // Kn and Rc of each fix peridem/wall with a contact law of its own
+  std::vector<std::array<double, 2>> own_wall_laws() const;
+  static std::string wall_law_note(const std::vector<std::array<double, 2>> &laws);
   std::string last_time_step_report; // printed again only when it changes
   bool start_checked = false;        // overlaps at the first step reported (setup())
   void report_start_overlaps();

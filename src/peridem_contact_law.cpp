@@ -172,6 +172,22 @@ double wall_contact_stiffness(int dimension, double Kn, double V, double Rc, dou
   return kPi * Kn * V * (Rc * Rc - d * d) * (Rc - d);
 }
 
+namespace {
+// The stiffest wall contact a node of volume V (spacing h) meets at the shallow depth of its
+// wall's R_c: the pair's law, or each wall's own (fix peridem/wall with Kn, Rc of its own).
+double stiffest_wall(const TimeStepInput &in, double V, double h)
+{
+  auto stiffness = [&](double Kn, double R) {
+    const double shallow = R > h ? R - std::sqrt(R * R - h * h) : R;
+    return wall_contact_stiffness(in.dimension, Kn, V, R, R - shallow);
+  };
+  if (in.wall_laws.empty()) return stiffness(in.Kn, in.Rc);
+  double k = 0.0;
+  for (const auto &law : in.wall_laws) k = std::max(k, stiffness(law[0], law[1]));
+  return k;
+}
+} // namespace
+
 TimeStepEstimate stable_time_step(const TimeStepInput &in)
 {
   if (in.dimension != 2 && in.dimension != 3)
@@ -208,9 +224,7 @@ TimeStepEstimate stable_time_step(const TimeStepInput &in)
       const double ball = 2.0 * std::ceil(ball_area / V) / in.dimension;
       const double shallow = 2.0 * (two_d ? 2.0 : 4.0);
       double neff = std::min(ball, shallow);
-      if (in.walls)
-        neff = std::max(
-            neff, wall_contact_stiffness(in.dimension, in.Kn, V, R, R - out.shallow_depth) / k);
+      if (in.walls) neff = std::max(neff, stiffest_wall(in, V, h) / k);
       n = 0.5 * neff;
     }
     out.n_contacts = n;

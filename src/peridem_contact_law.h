@@ -64,8 +64,10 @@
 #include "peridem_bond_law.h" // Micromodulus, ParameterError
 #include "peridem_math.h"
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace peridem {
 
@@ -360,6 +362,9 @@ struct TimeStepInput {
   double damping_ratio = 0.0; // contact damping ratio (r_d, or zeta of eq. 23)
   double n_contacts = 0.0;    // > 0: effective pair springs n (omega_c^2 = 2 n k/m); 0: above
   bool walls = true;          // a fix peridem/wall exists: the wall term takes part
+  // walls with a contact law of their own (fix peridem/wall Kn ... Rc ...): the stiffest sets
+  // the wall term; empty: the walls use Kn and Rc above ('contact pair')
+  std::vector<std::array<double, 2>> wall_laws; // {Kn, Rc} each
   double safety = 0.8;
 };
 struct TimeStepEstimate {

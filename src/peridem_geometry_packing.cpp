@@ -46,6 +46,30 @@ double ball_volume(double r, int dim)
   return dim == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
 }
 
+// Densest packings: hexagonal (2D), fcc (3D); a bed needing more cannot fit. `bound` and
+// `why` qualify a lower bound ("at least ", " (N disks of radius >= r)").
+void check_fraction(double fraction, int dim, const std::string &bound = "",
+                    const std::string &why = "")
+{
+  const double densest = dim == 2 ? kPi / (2.0 * std::sqrt(3.0)) : kPi / (3.0 * std::sqrt(2.0));
+  if (fraction > densest)
+    throw GeometryError("the disks need a packing fraction of " + bound + str(fraction) + why +
+                        " to fit in the container, beyond the densest packing (" + str(densest) +
+                        ")");
+}
+
+// Every extent of the container must hold a disk of radius r, with the minimiser's
+// tolerance (the radii grow by tau/2 there); `note` qualifies r in the message.
+void check_extents(const PackingOptions &opt, double r, const std::string &note = "")
+{
+  const double alpha = 0.5 * opt.tolerance;
+  for (int d = 0; d < opt.dimension; d++)
+    if (!(opt.hi[d] - opt.lo[d] >= 2.0 * r * (1.0 + alpha)))
+      throw GeometryError("container " + std::string(1, "xyz"[d]) + " extent " +
+                          str(opt.hi[d] - opt.lo[d]) + " is too small for a disk of radius " +
+                          str(r) + note);
+}
+
 /* Cell grid over [lo, hi] (cells of side >= `size`; points outside are put in
    the border cells). Cells are sorted by a counting sort, so building is O(N).
    for_each_pair visits each unordered pair of points in the same or adjacent
@@ -584,6 +608,19 @@ int pack_tiles(int D, std::vector<std::array<double, 3>> &x, const std::vector<d
   return static_cast<int>(std::lround(work / N));
 }
 
+void check_count_fits(const RadiusDistribution &dist, std::size_t count, const PackingOptions &opt)
+{
+  dist.validate();
+  check_extents(opt, dist.smallest(), ", the smallest of the distribution");
+  double container = 1.0;
+  for (int d = 0; d < opt.dimension; d++) container *= opt.hi[d] - opt.lo[d];
+  // every disk is at least as large as the smallest radius: a lower bound of their volume
+  const double least = static_cast<double>(count) * ball_volume(dist.smallest(), opt.dimension);
+  check_fraction(least / container, opt.dimension, "at least ",
+                 " (" + std::to_string(count) + " disks of radius >= " + str(dist.smallest()) +
+                     ")");
+}
+
 Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt)
 {
   const int D = opt.dimension;
@@ -592,7 +629,6 @@ Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt
   if (!(opt.tolerance > 0.0 && opt.tolerance < 0.1))
     throw GeometryError("packing tolerance " + str(opt.tolerance) + " must be in (0, 0.1)");
   const int top = D - 1;
-  const char *axis = "xyz";
   double rmax = 0.0, rsum = 0.0, volume = 0.0;
   for (double r : radii) {
     if (!(r > 0.0)) throw GeometryError("disk radius " + str(r) + " must be > 0");
@@ -601,20 +637,10 @@ Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt
     volume += ball_volume(r, D);
   }
   const double alpha = 0.5 * opt.tolerance;
-  for (int d = 0; d < D; d++)
-    if (!(opt.hi[d] - opt.lo[d] >= 2.0 * rmax * (1.0 + alpha)))
-      throw GeometryError("container " + std::string(1, axis[d]) + " extent " +
-                          str(opt.hi[d] - opt.lo[d]) + " is too small for a disk of radius " +
-                          str(rmax));
+  check_extents(opt, rmax);
   double base = 1.0; // floor area (width in 2D)
   for (int d = 0; d < top; d++) base *= opt.hi[d] - opt.lo[d];
-  const double height = opt.hi[top] - opt.lo[top];
-  // densest packings: hexagonal (2D), fcc (3D); beyond them no bed can fit
-  const double densest = D == 2 ? kPi / (2.0 * std::sqrt(3.0)) : kPi / (3.0 * std::sqrt(2.0));
-  if (volume / (base * height) > densest)
-    throw GeometryError("the disks need a packing fraction of " + str(volume / (base * height)) +
-                        " to fit in the container, beyond the densest packing (" + str(densest) +
-                        ")");
+  check_fraction(volume / (base * (opt.hi[top] - opt.lo[top])), D);
 
   // scaled units: lengths / mean radius, floor at 0
   const std::size_t N = radii.size();

@@ -98,6 +98,12 @@ struct Packing {
 // the container) or if the minimisation does not converge.
 Packing pack_spheres(const std::vector<double> &radii, const PackingOptions &opt);
 
+// Before any radius is drawn: throws GeometryError if `count` disks of dist, each at least of
+// its smallest radius, could not fit in the container of opt even at the densest packing. After
+// it passes, count is at most the number of smallest disks the container holds, so drawing
+// count radii costs no more memory than a bed that fits.
+void check_count_fits(const RadiusDistribution &dist, std::size_t count, const PackingOptions &opt);
+
 // Smallest gap (distance minus radii) over all disk pairs and all walls of box
 // lo/hi (negative: overlap or wall crossing); exact, cell grid.
 struct GapReport {

@@ -432,6 +432,20 @@ TEST(ContactLaw, CentroidDamping)
   EXPECT_DOUBLE_EQ(grain_node_share(0.5, 10.0), 0.05);
 }
 
+namespace {
+// A 2d contact without bonds: K_n = 1e20, node spacing h = 1e-4 (V = 1e-8), m = 1.2e-5.
+TimeStepInput contact_only_input(double Rc)
+{
+  TimeStepInput c;
+  c.dimension = 2;
+  c.Kn = 1e20;
+  c.Rc = Rc;
+  c.node_volume = 1e-8;
+  c.min_node_mass = 1.2e-5;
+  return c;
+}
+} // namespace
+
 TEST(ContactLaw, StableTimeStep)
 {
   TimeStepInput in;
@@ -455,12 +469,7 @@ TEST(ContactLaw, StableTimeStep)
   in.bond_omega2 = 0.0;
 
   // contact only: dt_c = sqrt(2 m/(n K_n V^2))
-  TimeStepInput c;
-  c.dimension = 2;
-  c.Kn = 1e20;
-  c.Rc = 0.95e-4;
-  c.node_volume = 1e-8; // h = 1e-4
-  c.min_node_mass = 1.2e-5;
+  TimeStepInput c = contact_only_input(0.95e-4);
   t = stable_time_step(c);
   // R_c < h: the ball holds ceil(pi Rc^2/V) = ceil(2.835) = 3 partners, isotropic: 2 x 3/2 =
   // 3 k/m, below the shallow bound 2 x 2 k/m; the wall (no shallow limit for R_c < h: on its
@@ -499,6 +508,29 @@ TEST(ContactLaw, StableTimeStep)
               1.0 / (both.dt_bond * both.dt_bond) + 1.0 / (both.dt_contact * both.dt_contact),
               1e-9 / (both.dt_critical * both.dt_critical));
   EXPECT_DOUBLE_EQ(both.dt_recommended, 0.8 * both.dt_critical);
+}
+
+// A wall with its own contact law (fix peridem/wall Kn ... Rc ...) enters the contact bound with
+// its Kn and Rc (issue 27): the pair's law given as the wall's changes nothing (to the bit), a
+// wall 100x stiffer sets n from its own wall_contact_stiffness, and the stiffest wall counts.
+TEST(ContactLaw, TimeStepSeesTheWallsOwnLaw)
+{
+  TimeStepInput c = contact_only_input(1.6e-4);
+  const TimeStepEstimate pair_only = stable_time_step(c);
+  c.wall_laws = {{c.Kn, c.Rc}};
+  EXPECT_EQ(stable_time_step(c).dt_contact, pair_only.dt_contact);
+  // a wall of 100 Kn at the shallow depth d = (1.6 - sqrt(1.56)) h: 2 x 100 Kn V sqrt(Rc^2 -
+  // d^2)(Rc - d) = 100 x 0.70 pair springs k = Kn V^2, above the pair's 4: n = 35.1
+  c.wall_laws = {{1e20, 1.6e-4}, {1e22, 1.6e-4}};
+  const double d = c.Rc - (1.6 - std::sqrt(1.56)) * 1e-4;
+  const double kw = wall_contact_stiffness(2, 1e22, 1e-8, c.Rc, d);
+  const TimeStepEstimate stiff = stable_time_step(c);
+  EXPECT_NEAR(stiff.n_contacts, 0.5 * kw / (1e20 * 1e-16), 1e-12 * stiff.n_contacts);
+  EXPECT_NEAR(stiff.n_contacts, 35.1, 0.1);
+  EXPECT_NEAR(stiff.dt_contact, std::sqrt(2.0 * 1.2e-5 / (0.5 * kw)), 1e-12 * stiff.dt_contact);
+  // no walls: their laws do not count
+  c.walls = false;
+  EXPECT_EQ(stable_time_step(c).dt_contact, pair_only.dt_contact);
 }
 
 TEST(ContactLaw, SymmetricMaxEigenvalue)

@@ -396,6 +396,32 @@ TEST(GeometryPacking, ContainerErrors)
   EXPECT_THROW(pack_spheres({0.5, -0.1}, o), GeometryError);
 }
 
+// Before any radius is drawn (issue 27: count 4294967306 aborted with std::bad_alloc, 1e8 drew
+// 1e8 radii first): a lower bound of the disks' area from the smallest radius, and the smallest
+// disk against each extent; a count that may fit passes.
+TEST(GeometryPacking, CountIsCheckedBeforeDrawing)
+{
+  PackingOptions o;
+  o.hi[0] = 5.0;
+  o.hi[1] = 10.0;
+  const auto dist = RadiusDistribution::uniform(0.4, 0.6);
+  EXPECT_NO_THROW(check_count_fits(dist, 10, o));
+  // 90 disks of radius >= 0.4 cover >= 0.905 of 50: below the densest 0.9069, may fit
+  EXPECT_NO_THROW(check_count_fits(dist, 90, o));
+  try {
+    check_count_fits(dist, 91, o); // >= 0.9148
+    ADD_FAILURE() << "expected an error";
+  } catch (GeometryError &e) {
+    EXPECT_NE(std::string(e.what()).find("at least 0.914832 (91 disks of radius >= 0.4)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(check_count_fits(dist, std::size_t(1) << 62, o), GeometryError);
+  o.hi[0] = 0.79; // narrower than the smallest disk
+  EXPECT_THROW(check_count_fits(dist, 1, o), GeometryError);
+  EXPECT_THROW(check_count_fits(RadiusDistribution::uniform(0.0, 0.6), 1, o), GeometryError);
+}
+
 TEST(GeometryPacking, SmallestEnclosingCircle)
 {
   // square of side 2: centre, radius sqrt 2

@@ -14,8 +14,9 @@ peridem_add_example_test(packed_bed packed-bed in.bed 1 2)
 # bad input: clear errors naming the command and the bad value
 set(_b ${_in}/bed/bed_box.in)
 set(_r "radius uniform 0.4 0.6 seed 1")
+# checked before the radii are drawn (issue 27): against the distribution's smallest radius
 peridem_add_error_test(bed_container_too_small ${_b}
-  "create_peridem_bed: container x extent 0.5 is too small for a disk of radius 0.5[0-9]*"
+  "create_peridem_bed: container x extent 0.5 is too small for a disk of radius 0.4, the smallest of the distribution"
   -var bed "count 10 ${_r} box 0 0.5 0 10")
 peridem_add_error_test(bed_zero_radius ${_b}
   "create_peridem_bed: smallest radius 0 must be > 0"
@@ -29,6 +30,18 @@ peridem_add_error_test(bed_inverted_range ${_b}
 peridem_add_error_test(bed_unreachable_fraction ${_b}
   "create_peridem_bed: the disks need a packing fraction of .* beyond the densest packing"
   -var bed "count 1000 ${_r}")
+# issue 27: the count is range-checked (atom IDs are 32-bit here) and checked against the
+# container before any radius is drawn (it used to abort with std::bad_alloc, or draw 1e8 radii
+# first); "at least" marks the check before drawing
+peridem_add_error_test(bed_count_beyond_int64 ${_b}
+  "create_peridem_bed: count must be an integer from 1 to 2147483647, not 4294967306"
+  -var bed "count 4294967306 ${_r}")
+peridem_add_error_test(bed_count_beyond_tagint ${_b}
+  "create_peridem_bed: count must be an integer from 1 to 2147483647, not 2147483648"
+  -var bed "count 2147483648 ${_r}")
+peridem_add_error_test(bed_count_unfit_before_drawing ${_b}
+  "create_peridem_bed: the disks need a packing fraction of at least 1.0053[0-9]*e\\+06 \\(100000000 disks of radius >= 0.4\\) to fit"
+  -var bed "count 100000000 ${_r}")
 peridem_add_error_test(bed_too_high ${_b}
   "create_peridem_bed: the jammed bed of 55 disks is .* high, more than the container's 10"
   -var bed "count 55 ${_r}")
@@ -47,8 +60,15 @@ peridem_add_error_test(bed_unknown_shape ${_b}
 peridem_add_error_test(bed_no_label_lines ${_b}
   "create_peridem_grains: no line of the positions file has label 'hexagon'"
   -var bed "count 10 ${_r} labels disk 1" -var grains "hexagon")
-# both write and read bed_error.txt in the same folder: never at the same time (ctest -j)
-set_tests_properties(error.bed_unknown_shape error.bed_no_label_lines PROPERTIES RESOURCE_LOCK bed_error_txt)
+# the time it took is wall time (MPI_Wtime), and the log says so
+add_test(NAME bed.log_says_wall_time
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "^  create_peridem_bed wall time = [0-9.]+ seconds"
+          $<TARGET_FILE:lmp_peridem> -in ${_b} -log none -echo screen
+          -var bed "count 10 ${_r} labels disk 1"
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# these write and read bed_error.txt in the same folder: never at the same time (ctest -j)
+set_tests_properties(error.bed_unknown_shape error.bed_no_label_lines bed.log_says_wall_time
+  PROPERTIES RESOURCE_LOCK bed_error_txt)
 peridem_add_error_test(bed_rattlers_value ${_b}
   "create_peridem_bed: rattlers must be grow or keep, got 'shake'"
   -var bed "count 10 ${_r} rattlers shake")

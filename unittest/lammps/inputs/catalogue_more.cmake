@@ -66,6 +66,11 @@ peridem_catalogue_error(cut_word_segment "cut_peridem_bonds: segment must be a n
 peridem_catalogue_error(compute_bed_nan_bin "compute peridem/bed: bin must be a finite number, not nan"
   -var pre "region r2 block 0 1 0 1 0 1" -var bad "compute b all peridem/bed r2 bin nan")
 peridem_catalogue_error(compute_fragments_inf_min "compute peridem/fragments: min must be a finite number, not inf"
+  -var bad "compute f all peridem/fragments min volume inf")
+# a node count is a whole number (issue 27: 2.5 was accepted)
+peridem_catalogue_error(compute_fragments_fraction_min_nodes "compute peridem/fragments: min nodes must be an integer, not '2.5'"
+  -var bad "compute f all peridem/fragments min nodes 2.5")
+peridem_catalogue_error(compute_fragments_word_min_nodes "compute peridem/fragments: min nodes must be an integer, not 'inf'"
   -var bad "compute f all peridem/fragments min nodes inf")
 
 # ---- bond styles
@@ -106,7 +111,7 @@ peridem_catalogue_commands(bed_no_box "create_peridem_bed command before simulat
   -var c1 "${_bed} count 10")
 peridem_catalogue_error(bed_count_value "Illegal create_peridem_bed command: count needs 1 value"
   -var bad "${_bed} count")
-peridem_catalogue_error(bed_count_zero "create_peridem_bed: count must be > 0, got 0"
+peridem_catalogue_error(bed_count_zero "create_peridem_bed: count must be an integer from 1 to 2147483647, not 0"
   -var bad "${_bed} count 0")
 peridem_catalogue_error(bed_seed_zero "create_peridem_bed: seed must be > 0, got 0"
   -var bad "${_bed} count 10 seed 0")
@@ -198,6 +203,9 @@ peridem_catalogue2d(wall_shear_z_2d "fix peridem/wall: shear velocity of wall yl
 peridem_catalogue_error(wall_node_beyond "fix peridem/wall: atom [0-9]+ is .* beyond wall xlo \\(more than Rc = 0.0001\\): it crossed the wall"
   -var pre "velocity all set -1e5 0 0" -var pre2 "fix n all nve"
   -var pre3 "fix w all peridem/wall xlo 0.85e-3 Kn 1e23 Rc 1e-4" -var bad "run 1")
+# a wall through a grain names each grain / wall pair once (issue 27: "grain 1 / wall xlo" x 5)
+peridem_catalogue_error(wall_through_grain_named_once "fix peridem/wall w: 18 nodes lie more than Rc = 0.0001 beyond a wall at the first step \\(e.g. grain 1 / wall xlo\\): a wall placed through a grain"
+  -var bad "fix w all peridem/wall xlo 2.5e-3 Kn 1e23 Rc 1e-4")
 peridem_catalogue_warning(wall_lost_warn "fix peridem/wall w: [0-9]+ node-steps with a node completely beyond a wall in the last run"
   -var bad "fix w all peridem/wall xlo 2.5e-3 Kn 1e23 Rc 1e-4 lost warn")
 
@@ -227,3 +235,16 @@ peridem_catalogue_np2(cut_partner_beyond_ghosts "cut_peridem_bonds: bond partner
   ${_np2} -var c9 "cut_peridem_bonds all segment 0 0 1 1")
 peridem_catalogue_np2(fragments_partner_missing "compute peridem/fragments: atom [0-9]+ bonded to atom [0-9]+ is missing on proc [01]"
   ${_np2} -var c9 "include ${_cat}/fragments_np2.in")
+
+# ---- issue 27, item 8: bond_style peridem/lps plane strain|stress is a 2d model (it was
+# silently ignored in 3d); the bond_coeff log line names the plane mode
+peridem_catalogue_error(lps_plane_stress_3d "bond_style peridem/lps: plane stress is a 2d model; a 3d simulation always uses the 3d constants"
+  -var pre "bond_style peridem/lps plane stress" -var pre2 "bond_coeff * K 1e9 G 0.5e9 Gc 1000 horizon 2.0001e-3")
+add_test(NAME lps.log_names_plane_2d
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "bond_style peridem/lps type \\*: .*influence conic, plane stress$"
+          $<TARGET_FILE:lmp_peridem> -in ${_cat}/base2d.in -log none -echo screen
+          -var pre "bond_style peridem/lps plane stress" -var bad "bond_coeff * K 1e9 G 0.5e9 Gc 1000 horizon 6e-4")
+add_test(NAME lps.log_names_plane_3d
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "bond_style peridem/lps type \\*: .*influence conic, 3d$"
+          $<TARGET_FILE:lmp_peridem> -in ${_cat}/base.in -log none -echo screen
+          -var input_dir ${_fs} -var pre "bond_style peridem/lps" -var pre2 "bond_coeff * K 1e9 G 0.5e9 Gc 1000 horizon 2.0001e-3")

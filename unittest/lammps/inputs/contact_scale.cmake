@@ -132,3 +132,12 @@ add_test(NAME contact_startup_skin_overflow_warns_3d_si
           "Neighbor list overflow"
           $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_skin_3d_si.in -log none -echo none)
 set_tests_properties(contact_startup_skin_overflow_warns_3d_si PROPERTIES TIMEOUT 120)
+
+# issue 27, item 8: a wall with its own, stiffer Kn enters pair_style peridem/contact's
+# time-step estimate (it used the pair's Kn for the walls too)
+add_test(NAME contact.time_step_sees_wall_kn
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh
+          --regex "types 1 1: time step estimate 1.05e-07 \\(critical 1.313e-07: bonds 1.147e-06, contact 1.322e-07 .*; walls with their own law: Kn = 1e\\+26, Rc = 0.0009\\)"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/catalogue/base.in -log none -echo screen
+          -var input_dir ${PROJECT_SOURCE_DIR}/unittest/force-styles/tests -var pair_style peridem/contact -var pre "pair_coeff * * Kn 1e23 Rc 9e-4"
+          -var bad "fix w all peridem/wall xlo -1e-2 Kn 1e26 Rc 9e-4")
