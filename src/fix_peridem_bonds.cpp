@@ -24,6 +24,8 @@
 #include "lmp_peridem_topology.h"
 #include "memory.h"
 #include "modify.h"
+#include "output.h"
+#include "thermo.h"
 #include "peridem_atom_order.h"
 #include "update.h"
 
@@ -57,6 +59,9 @@ FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
                ID, id);
   restart_peratom = 1;
   comm_reverse = 2;
+  scalar_flag = 1; // nodes deleted with their bonds (thermo_modify lost ignore|warn)
+  global_freq = 1;
+  extscalar = 1;
   // LAMMPS 29Sep2021 lists the fixes that may force a rebuild in
   // Neighbor::init(), at the start of each run: declare it now, not at the
   // first break, or the first run that breaks bonds never rebuilds early.
@@ -108,6 +113,10 @@ void FixPeridemBonds::init()
     auto *wall = dynamic_cast<FixPeridemWall *>(modify->fix[f]);
     if (wall && wall->deletes_lost()) escapes_deleted = 1;
   }
+  // thermo_modify lost ignore|warn: the user lets atoms go (as BPM's users do for fragments
+  // that fly off); here they go with their bonds, counted
+  lost_allowed = output->thermo && output->thermo->lostflag != Thermo::ERROR;
+  deleted_run = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -133,18 +142,54 @@ void FixPeridemBonds::check_escapes()
 {
   if (escapes_deleted) return;
   double **x = atom->x;
+  std::vector<int> doomed;
   for (int i = 0; i < atom->nlocal; i++) {
     const int face = peridem_lmp::outside_fixed_boundary(domain, x[i]);
     if (face < 0) continue;
+    if (lost_allowed) {
+      doomed.push_back(i);
+      continue;
+    }
     static const char *const faces[] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
     error->one(FLERR,
                "atom {} of grain {} left the simulation box through {} at ({}, {}, {}) at step "
                "{}: LAMMPS would lose it and its bonds. Enlarge the box, contain the grains "
                "(fix peridem/wall), or delete escaping nodes with their bonds (fix peridem/wall "
-               "... lost delete)",
+               "... lost delete, or thermo_modify lost ignore)",
                atom->tag[i], atom->molecule[i], faces[face], x[i][0], x[i][1], x[i][2],
                update->ntimestep);
   }
+  if (!lost_allowed) return;
+  // every rank takes part (the deletion communicates), with or without nodes of its own
+  const bigint gone =
+      peridem_lmp::delete_nodes(lmp, doomed, [this](int i, tagint) { partner_deleted(i); });
+  deleted_run += gone;
+  deleted_total += gone;
+}
+
+/* ----------------------------------------------------------------------
+   nodes deleted with their bonds since the fix was created (thermo_modify
+   lost ignore|warn); reported at the end of each run
+------------------------------------------------------------------------- */
+
+double FixPeridemBonds::compute_scalar()
+{
+  return static_cast<double>(deleted_total);
+}
+
+void FixPeridemBonds::post_run()
+{
+  if (!lost_allowed || deleted_run == 0 || comm->me != 0) return;
+  if (output->thermo->lostflag == Thermo::WARN)
+    error->warning(FLERR,
+                   "fix {}: {} nodes left the box in this run and were deleted with their bonds "
+                   "(thermo_modify lost warn; {} so far, f_{})",
+                   ID, deleted_run, deleted_total, ID);
+  else
+    utils::logmesg(lmp,
+                   "fix {}: {} nodes left the box in this run and were deleted with their bonds "
+                   "(thermo_modify lost ignore; {} so far, f_{})\n",
+                   ID, deleted_run, deleted_total, ID);
 }
 
 /* ----------------------------------------------------------------------

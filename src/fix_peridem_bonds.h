@@ -50,6 +50,8 @@ class FixPeridemBonds : public Fix {
   void min_pre_force(int) override;
   void min_post_force(int) override;
   void setup_pre_exchange() override;
+  void post_run() override;
+  double compute_scalar() override;
   void pre_exchange() override;
   // LAMMPS rebuilt its neighbour and bond lists: at every setup (also of each snapshot of
   // rerun, which resets neighbor->ncalls to 0 each time), every reneighbouring of a run and
@@ -120,8 +122,10 @@ class FixPeridemBonds : public Fix {
   // indices lost this step; they travel home by reverse communication and
   // leave the special lists there
   std::unordered_map<int, std::vector<tagint>> lost_partners;
-  int comm_mode;           // which reverse communication is under way
-  int escapes_deleted;     // a fix peridem/wall deletes nodes leaving the box
+  int comm_mode;             // which reverse communication is under way
+  int escapes_deleted;       // a fix peridem/wall deletes nodes leaving the box
+  bool lost_allowed = false; // thermo_modify lost ignore|warn: delete them here instead
+  bigint deleted_run = 0, deleted_total = 0;
   int wd_wvolume = 0;      // the damage section also carries the LPS weighted volume m
   double *wvolume;         // LPS weighted volume m (reference), < 0 until computed
   double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()

@@ -19,6 +19,7 @@
 #include "error.h"
 #include "memory.h"
 #include "modify.h"
+#include "output.h"
 #include "update.h"
 
 #include <cmath>
@@ -83,9 +84,10 @@ void FixPeridemVelocityHistory::setup_pre_force(int)
   prepared = false;
   if (update->whichflag != 1) return; // minimisation: no dynamics to continue
   double **v = atom->v;
+  const double step = double(update->ntimestep);
   for (int i = 0; i < atom->nlocal; i++) {
     const bool same =
-        known[i] != 0.0 && v[i][0] == vend[i][0] && v[i][1] == vend[i][1] && v[i][2] == vend[i][2];
+        known[i] == step && v[i][0] == vend[i][0] && v[i][1] == vend[i][1] && v[i][2] == vend[i][2];
     if (!same)
       for (int k = 0; k < 3; k++) vhalf[i][k] = v[i][k];
   }
@@ -100,19 +102,25 @@ const double *FixPeridemVelocityHistory::setup_velocities() const
 }
 
 /* ----------------------------------------------------------------------
-   every step, before the forces: v is v(n - 1/2) (velocity Verlet's first
-   half-kick is done), the velocity the dissipative forces take
+   before the forces: v is v(n - 1/2) (velocity Verlet's first half-kick is
+   done), the velocity the dissipative forces take. Kept only where a run
+   may continue from: its last step and the steps that write a restart file
+   (a copy at every step would stream the velocities once more per step).
+   A run ended early (fix halt) leaves an older step's values: the step
+   stamp tells.
 ------------------------------------------------------------------------- */
 
 void FixPeridemVelocityHistory::pre_force(int)
 {
   prepared = false;
+  const bigint step = update->ntimestep;
+  if (step != update->laststep && step != output->next_restart) return;
   double **v = atom->v;
   for (int i = 0; i < atom->nlocal; i++) {
     vhalf[i][0] = v[i][0];
     vhalf[i][1] = v[i][1];
     vhalf[i][2] = v[i][2];
-    known[i] = 1.0;
+    known[i] = double(step);
   }
 }
 
@@ -196,7 +204,7 @@ void FixPeridemVelocityHistory::unpack_restart(int nlocal, int nth)
   const double *buf = &extra[nlocal][m + 1];
   bool finite = true;
   for (int k = 0; k < NVALUES; k++) finite = finite && std::isfinite(buf[k]);
-  if (!finite || (buf[6] != 0.0 && buf[6] != 1.0))
+  if (!finite || buf[6] < 0.0 || buf[6] != std::floor(buf[6]))
     error->one(FLERR, "fix {}: invalid velocity history of atom {} in restart file (damaged file?)",
                ID, atom->tag[nlocal]);
   unpack_exchange(nlocal, const_cast<double *>(buf));

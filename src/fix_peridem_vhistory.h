@@ -74,7 +74,7 @@ class FixPeridemVelocityHistory : public Fix {
   static constexpr int NVALUES = 7; // vhalf (3), vend (3), known
   double **vhalf;        // v(n - 1/2) of the last step's forces; in setup, the velocity to use
   double **vend;         // v at the end of that step's run: a node whose v differs was changed
-  double *known;         // 1 where vhalf holds a step's velocity
+  double *known;         // the step whose v(n - 1/2) vhalf holds (0: none)
   bool in_run = false;   // between a run's setup and its end (restarts written in a run)
   bool prepared = false; // setup_velocities() valid in this setup
 };

@@ -51,6 +51,24 @@ foreach(_np 1 2)
             $<TARGET_FILE:lmp_peridem> -in escape.in -log none -echo none
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
+# ... and without walls, where the user lets atoms go (thermo_modify lost ignore or warn):
+# deleted with their bonds by fix PERIDEM_BONDS and counted, on 1 and 2 ranks
+foreach(_np 1 2)
+  add_test(NAME escaped_nodes_deleted_without_walls_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np}
+            $<TARGET_FILE:lmp_peridem> -in escape_no_walls.in -log none -echo none
+    WORKING_DIRECTORY ${_in}/breakage)
+endforeach()
+add_test(NAME escaped_nodes_deleted_without_walls_warns
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh
+          --regex "WARNING: fix PERIDEM_BONDS: [0-9]+ nodes left the box in this run and were deleted with their bonds \\(thermo_modify lost warn"
+          $<TARGET_FILE:lmp_peridem> -in escape_no_walls.in -log none -echo none -var lost warn
+  WORKING_DIRECTORY ${_in}/breakage)
+add_test(NAME error.escaped_node_named_without_walls
+  COMMAND ${PERIDEM_RUN}/expect_error.sh
+          "atom [0-9]+ of grain 1 left the simulation box through yhi .*thermo_modify lost ignore"
+          $<TARGET_FILE:lmp_peridem> -in escape_no_walls.in -log none -echo none -var lost error
+  WORKING_DIRECTORY ${_in}/breakage)
 # ... and through a lid the strip is fast enough to cross (yhi at 1.0: deleted
 # at steps 90-100 once wholly beyond it, before it would reach the box edge)
 add_test(NAME escaped_nodes_beyond_wall_deleted
