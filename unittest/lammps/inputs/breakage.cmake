@@ -96,31 +96,28 @@ add_test(NAME error.data_file_damage_integer_property
 # the grain (1e6: before, 500,145 broken bonds), a line given twice in place of another (before,
 # 145.5 broken bonds where 150 are right, without a word), a negative weighted volume (before,
 # replaced by a recomputed one), and vectors named otherwise (before, all damage silently 0)
-add_test(NAME error.data_file_damage_huge_count
-  COMMAND ${PERIDEM_RUN}/expect_error.sh
-          "fix PERIDEM_BONDS: atom [0-9]+ has 1000000 broken bonds in the data file, more than the [0-9]+ other nodes of its grain"
-          $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen
-          -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_huge -var spoil huge
-          -var scripts ${PERIDEM_RUN}
-  WORKING_DIRECTORY ${_in}/breakage)
-add_test(NAME data_file_damage_line_twice_warns
-  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex
-          "WARNING: fix PERIDEM_BONDS: the broken bond counts of 1 grains \\(first: grain [0-9]+\\) in the data file sum to an odd number"
-          $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen
-          -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_twice -var spoil twice
-          -var scripts ${PERIDEM_RUN} -var compare 0
-  WORKING_DIRECTORY ${_in}/breakage)
-add_test(NAME error.data_file_damage_negative_wvolume
-  COMMAND ${PERIDEM_RUN}/expect_error.sh
-          "fix PERIDEM_BONDS: invalid weighted volume -2 of atom [0-9]+ in the data file"
-          $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen -var lps 1
-          -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_wvolume -var spoil wvolume
-          -var scripts ${PERIDEM_RUN}
-  WORKING_DIRECTORY ${_in}/breakage)
-add_test(NAME data_file_damage_misnamed_warns
-  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex
-          "WARNING: fix PERIDEM_BONDS: per-atom property nbroken looks like the damage of a PeridemDamage section but is not read"
-          $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen
-          -var out ${CMAKE_CURRENT_BINARY_DIR}/data_damage_misnamed -var props "d_nbroken d_zbroken"
-          -var compare 0
-  WORKING_DIRECTORY ${_in}/breakage)
+# _data_damage_case(NAME CHECK...): data_damage.in read back into folder NAME, checked by
+# CHECK (a script and its regex) and given the remaining arguments
+function(_data_damage_case name)
+  cmake_parse_arguments(_c "" "" "CHECK;ARGS" ${ARGN})
+  add_test(NAME ${name}
+    COMMAND ${_c_CHECK} $<TARGET_FILE:lmp_peridem> -in data_damage.in -log none -echo screen
+            -var out ${CMAKE_CURRENT_BINARY_DIR}/${name} -var scripts ${PERIDEM_RUN} ${_c_ARGS}
+    WORKING_DIRECTORY ${_in}/breakage)
+endfunction()
+_data_damage_case(error.data_file_damage_huge_count
+  CHECK ${PERIDEM_RUN}/expect_error.sh
+        "fix PERIDEM_BONDS: atom [0-9]+ has 1000000 broken bonds in the data file, more than the [0-9]+ other nodes of its grain"
+  ARGS -var spoil huge)
+_data_damage_case(data_file_damage_line_twice_warns
+  CHECK ${PERIDEM_RUN}/expect_pass.sh --regex
+        "WARNING: fix PERIDEM_BONDS: the broken bond counts of 1 grains \\(first: grain [0-9]+\\) in the data file sum to an odd number"
+  ARGS -var spoil twice -var compare 0)
+_data_damage_case(error.data_file_damage_negative_wvolume
+  CHECK ${PERIDEM_RUN}/expect_error.sh
+        "fix PERIDEM_BONDS: invalid weighted volume -2 of atom [0-9]+ in the data file"
+  ARGS -var lps 1 -var spoil wvolume)
+_data_damage_case(data_file_damage_misnamed_warns
+  CHECK ${PERIDEM_RUN}/expect_pass.sh --regex
+        "WARNING: fix PERIDEM_BONDS: per-atom property nbroken looks like the damage of a PeridemDamage section but is not read"
+  ARGS -var props "d_nbroken d_zbroken" -var compare 0)
