@@ -25,6 +25,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "output.h"
+#include "pair.h"
 #include "thermo.h"
 #include "peridem_atom_order.h"
 #include "update.h"
@@ -117,6 +118,17 @@ void FixPeridemBonds::init()
   // that fly off); here they go with their bonds, counted
   lost_allowed = output->thermo && output->thermo->lostflag != Thermo::ERROR;
   deleted_run = 0;
+  // pair_style peridem/contact takes the nodes of a broken bond into its pair list at once
+  // (it holds each pair once with newton_pair on; with newton_bond on, or on one rank, one
+  // rank sees each break): no rebuild of the neighbour lists per break. Otherwise LAMMPS
+  // rebuilds them at the next step (collect()).
+  broken_pair_sink = nullptr;
+  Pair *contact = force->pair ? force->pair_match("^peridem/contact", 0) : nullptr;
+  if (contact && force->newton_pair && (force->newton_bond || comm->nprocs == 1)) {
+    int dim = 0;
+    broken_pair_sink =
+        static_cast<std::function<void(int, int)> *>(contact->extract("peridem_broken_pair", dim));
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -268,9 +280,9 @@ void FixPeridemBonds::collect()
     if (i < nlocal)
       for (tagint p : partners) forget_partner(i, p);
   lost_partners.clear();
-  // with a pair style, rebuild the neighbour lists at the next step
-  // (Neighbor::decide() compares next_reneighbor with the step)
-  if (force->pair) next_reneighbor = update->ntimestep + 1;
+  // with a pair style that cannot take the pairs (init()), rebuild the neighbour lists at
+  // the next step (Neighbor::decide() compares next_reneighbor with the step)
+  if (force->pair && !broken_pair_sink) next_reneighbor = update->ntimestep + 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -363,6 +375,7 @@ void FixPeridemBonds::bond_broken(int i1, int i2, double z)
   // count each bond once: with newton_bond off and the partner on another
   // rank, both ranks see it; the one holding the smaller ID counts it
   if (newton_bond || i2 < nlocal || tag[i1] < tag[i2]) broken_here++;
+  if (broken_pair_sink) (*broken_pair_sink)(i1, i2);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -29,6 +29,7 @@ FixStyle(peridem/bonds,FixPeridemBonds);
 
 #include "fix.h"
 
+#include <functional>
 #include <unordered_map>
 #include <vector>
 
@@ -126,6 +127,8 @@ class FixPeridemBonds : public Fix {
   int escapes_deleted;       // a fix peridem/wall deletes nodes leaving the box
   bool lost_allowed = false; // thermo_modify lost ignore|warn: delete them here instead
   bigint deleted_run = 0, deleted_total = 0;
+  // pair_style peridem/contact's intake of the nodes of broken bonds (init()), or nullptr
+  std::function<void(int, int)> *broken_pair_sink = nullptr;
   int wd_wvolume = 0;      // the damage section also carries the LPS weighted volume m
   double *wvolume;         // LPS weighted volume m (reference), < 0 until computed
   double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()

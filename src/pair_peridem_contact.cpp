@@ -71,6 +71,14 @@ PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
   nextra = 1;
   pvector = new double[1];
   pvector[0] = 0.0;
+  // a bond broken in this step's bond computation: its nodes are no longer 1-2 neighbours and
+  // touch from the next step on. LAMMPS's list excluded them (special_bonds lj 0.0); the copy
+  // takes the pair now, as a rebuild would (the loop checks the distance), so no rebuild of
+  // the lists is needed for contact between the pieces (the special lists are edited for the
+  // next one). Pairs are kept once, with newton_pair on (fix peridem/bonds decides).
+  broken_pair_sink = [this](int i, int j) {
+    if (pairs_copied) pairs.push_back(i < atom->nlocal ? NodePair{i, j} : NodePair{j, i});
+  };
 }
 
 PairPeridemContact::~PairPeridemContact()
@@ -834,6 +842,7 @@ void *PairPeridemContact::extract(const char *str, int &dim)
 {
   dim = 0;
   if (strcmp(str, "dissipated") == 0) return (void *)&dissipated;
+  if (strcmp(str, "peridem_broken_pair") == 0) return (void *)&broken_pair_sink;
   // per type t: the law of pair_coeff t t (Kn = 0 where it is not set), for fix peridem/wall
   // 'contact pair'
   if (strcmp(str, "peridem_contact_params") == 0) {

@@ -26,6 +26,7 @@ PairStyle(peridem/contact,PairPeridemContact);
 #include "pair.h"
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -103,6 +104,9 @@ class PairPeridemContact : public Pair {
   class FixPeridemVelocityHistory *history = nullptr;
   const double *vel = nullptr;
   const double *velocities() const;
+  // fix peridem/bonds hands over the nodes of each broken bond (extract "peridem_broken_pair"):
+  // they join the copy of the neighbour pairs at once, instead of at a rebuild of the lists
+  std::function<void(int, int)> broken_pair_sink;
   void copy_neighbour_pairs();
   std::vector<int> counts, displs; // for MPI_Allgatherv
 
