@@ -12,6 +12,8 @@
 #   kw       examples/kalthoff-winkler (h = 1 mm): the plate struck at 32 m/s / not struck (v 0)
 #   notch    examples/notch-fracture (m = 5): the notched grain struck / the same with
 #            bonds that cannot break (Gc 1e12)
+#   bed      bench/fracture/in.crush: 40 grains (2950 nodes) crushed by a lid at 20 m/s /
+#            the lid at rest
 # Prints per run: ns per bond-step of the bond style's own time (Bond section over the mean
 # bond count and the steps), ms per step, the shares of Bond, Pair, Neigh, Modify, Comm and
 # Output in the loop, neighbour builds, bonds broken, and builds per broken bond.
@@ -27,14 +29,17 @@ require_current_build "$build"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cp -r "$here/examples/kalthoff-winkler" "$here/examples/notch-fracture" "$work/"
+mkdir -p "$work/crush" && cp "$here/bench/fracture/in.crush" "$work/crush/"
 
 # name|folder|input|variables
-# name|folder|input|time step of the input|variables
+# name|folder|input|time step of the input (steps: the input takes -var steps)|variables
 cases=(
   "kw struck|kalthoff-winkler|in.kalthoff_winkler|1.8e-7|-var v 32"
   "kw quiet|kalthoff-winkler|in.kalthoff_winkler|1.8e-7|-var v 0"
   "notch struck|notch-fracture|in.notch_fracture|1.5e-8|"
   "notch quiet|notch-fracture|in.notch_fracture|1.5e-8|-var Gc 1e12"
+  "bed crushed|crush|in.crush|steps|-var vlid -20"
+  "bed held|crush|in.crush|steps|-var vlid 0"
 )
 
 # one run of $steps steps (the example included by a wrapper that prints the bond counts):
@@ -42,10 +47,11 @@ cases=(
 run_one() { # folder input dt vars
   local dir="$work/$1"
   printf 'variable b0 equal 0\ninclude %s\nprint "BENCH-BONDS $(bonds)"\n' "$2" >"$dir/in.bench"
+  local length="-var steps $steps"
+  [ "$3" = steps ] || length="-var time $(awk -v s="$steps" -v dt="$3" 'BEGIN {printf "%.10g", s * dt}')"
   (cd "$dir" && mpirun -np 1 "$build/lmp_peridem" -in in.bench $4 -var potentials "$here/potentials" \
-     -var time "$(awk -v s="$steps" -v dt="$3" 'BEGIN {printf "%.10g", s * dt}')" \
-     -log log.bench -screen none >/dev/null 2>&1)
-  awk '/^Loop time of/ && !loop {loop = $4}
+     $length -log log.bench -screen none >/dev/null 2>&1)
+  awk '/^Loop time of/ && $9 + 0 > nsteps {loop = $4; nsteps = $9 + 0}
        /^Bond +\|/ && !b {b = $5} /^Pair +\|/ && !p {p = $5} /^Neigh +\|/ && !n {n = $5}
        /^Comm +\|/ && !c {c = $5} /^Modify +\|/ && !m {m = $5} /^Output +\|/ && !o {o = $5}
        /Neighbor list builds/ && !builds {builds = $5}
