@@ -21,6 +21,7 @@
 #include "error.h"
 #include "fix_peridem_wall.h"
 #include "force.h"
+#include "lmp_peridem_grains.h"
 #include "lmp_peridem_topology.h"
 #include "memory.h"
 #include "modify.h"
@@ -35,8 +36,6 @@
 #include <cstring>
 #include <vector>
 #include <string>
-#include <array>
-#include <map>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -650,37 +649,25 @@ void FixPeridemBonds::check_damage_per_grain(const double *nb)
 {
   const int nlocal = atom->nlocal;
   const tagint *molecule = atom->molecule;
-  std::map<tagint, std::array<double, 2>> mine; // grain: nodes, broken ends
+  // per grain: nodes, broken bond ends
+  const tagint maxmol = peridem_lmp::max_grain_id(lmp);
+  const std::vector<double> grains =
+      peridem_lmp::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
+        row[0] += 1.0;
+        row[1] += nb[i];
+      });
   for (int i = 0; i < nlocal; i++) {
-    auto &g = mine[molecule[i]];
-    g[0] += 1.0;
-    g[1] += nb[i];
-  }
-  std::vector<double> flat;
-  for (const auto &g : mine) flat.insert(flat.end(), {double(g.first), g.second[0], g.second[1]});
-  int n = int(flat.size()), nprocs = comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> everyone(displs[nprocs - 1] + counts[nprocs - 1]);
-  MPI_Allgatherv(flat.data(), n, MPI_DOUBLE, everyone.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, world);
-  std::map<tagint, std::array<double, 2>> grains;
-  for (std::size_t k = 0; k + 2 < everyone.size(); k += 3) {
-    auto &g = grains[tagint(everyone[k])];
-    g[0] += everyone[k + 1];
-    g[1] += everyone[k + 2];
-  }
-  for (int i = 0; i < nlocal; i++)
-    if (nb[i] > grains[molecule[i]][0] - 1.0)
+    const double others = grains[2 * molecule[i]] - 1.0;
+    if (nb[i] > others)
       error->one(FLERR,
                  "fix {}: atom {} has {} broken bonds in the data file, more than the {} other "
                  "nodes of its grain {}",
-                 ID, atom->tag[i], nb[i], grains[molecule[i]][0] - 1.0, molecule[i]);
+                 ID, atom->tag[i], nb[i], others, molecule[i]);
+  }
   bigint odd = 0;
   tagint first = 0;
-  for (const auto &g : grains)
-    if (std::fmod(g.second[1], 2.0) != 0.0 && odd++ == 0) first = g.first;
+  for (tagint g = 1; g <= maxmol; g++)
+    if (std::fmod(grains[2 * g + 1], 2.0) != 0.0 && odd++ == 0) first = g;
   if (odd > 0 && comm->me == 0)
     error->warning(FLERR,
                    "fix {}: the broken bond counts of {} grains (first: grain {}) in the data "
