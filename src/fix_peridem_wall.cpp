@@ -395,6 +395,35 @@ void FixPeridemWall::check_start()
                "to let them be)",
                STYLE, id, nbeyond, rc_all, beyond.example_list());
   near.report(lmp, fmt::format("{} {}", STYLE, id), "nodes and walls", rc_all);
+  warn_tight_box(rc_all);
+}
+
+/* ----------------------------------------------------------------------
+   a wall still pushes a node up to Rc beyond its plane; a fixed box face
+   closer than that outside the wall (a wall at EDGE) loses such a node
+   ("Lost atoms") although the wall would have pushed it back
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::warn_tight_box(double Rc) const
+{
+  std::string tight;
+  for (int w = 0; w < nwalls; w++) {
+    const int dim = w / 2, side = w % 2;
+    // periodic dimensions are refused; a shrink-wrapped face follows the nodes
+    if (!walls[w].active || domain->boundary[dim][side] != 1) continue;
+    const double room =
+        side == 0 ? walls[w].pos - domain->boxlo[dim] : domain->boxhi[dim] - walls[w].pos;
+    if (room < Rc)
+      tight +=
+          fmt::format("{}{} ({:.3g} inside the face)", tight.empty() ? "" : ", ", FACES[w], room);
+  }
+  if (!tight.empty() && comm->me == 0)
+    error->warning(FLERR,
+                   "{} {}: walls {} lie less than Rc = {} inside a fixed box face: a node the "
+                   "wall pushes back from beyond its plane can leave the box and be lost. Put "
+                   "the box faces Rc or more outside the walls, or make those boundaries "
+                   "shrink-wrapped (boundary m)",
+                   STYLE, id, tight, Rc);
 }
 
 void FixPeridemWall::min_setup(int vflag)

@@ -110,6 +110,7 @@ class FixPeridemWall : public Fix {
   peridem::WallBox make_box() const;
   double wall_area(int w) const;
   void check_periodic() const;
+  void warn_tight_box(double Rc) const;
   void check_order(const char *when) const;
   void take_contact_from_pair();
   void update_variable_walls();

@@ -96,3 +96,21 @@ foreach(_np 1 2)
 endforeach()
 peridem_wall_error(near_list_value "ylo 0.0 Kn 1 Rc 0.5 near_list maybe"
   "fix peridem/wall: near_list must be no or yes, not maybe")
+
+# a wall less than Rc inside a fixed box face (a wall at EDGE): a node the wall pushes back from
+# beyond its plane would leave the box and be lost; warned at the first run. Quiet with Rc of
+# room, and at a shrink-wrapped face (boundary m)
+set(_tight "walls .* lie less than Rc = 0.5 inside a fixed box face")
+add_test(NAME wall_at_fixed_box_face_warns
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh
+          --regex "WARNING: fix peridem/wall wall: walls ylo \\(0 inside the face\\), yhi \\(0.3 inside the face\\) lie less than Rc = 0.5 inside a fixed box face"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_scale_error.in -log none -echo none
+          -var wall "ylo EDGE yhi 3.7 Kn 1 Rc 0.5")
+add_test(NAME wall_with_room_to_box_face_quiet
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "Loop time" --absent "${_tight}"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_scale_error.in -log none -echo none
+          -var wall "ylo -0.5 yhi 3.5 Kn 1 Rc 0.5")
+add_test(NAME wall_at_shrink_wrapped_face_quiet
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "Loop time" --absent "${_tight}"
+          $<TARGET_FILE:lmp_peridem> -in ${_in}/contact_scale_error.in -log none -echo none
+          -var wall "ylo -1 Kn 1 Rc 0.5" -var yb m)
