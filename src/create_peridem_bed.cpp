@@ -18,7 +18,9 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "input.h"
 #include "math_const.h"
+#include "variable.h"
 
 #include "peridem_geometry_packing.h"
 
@@ -58,6 +60,7 @@ void CreatePeridemBed::command(int narg, char **arg)
   bool grow = true;  // rattlers grow (default) or keep
   bool rows = false; // layout rows: Jha et al.'s (2021) perturbed rows (§4.4)
   double gap = 0.0, perturb = 0.1;
+  std::string lid_variable; // lid NAME: the bed's lid height as an internal-style variable
   double lo[3], hi[3];
   for (int k = 0; k < 3; k++) {
     lo[k] = domain->boxlo[k];
@@ -135,6 +138,12 @@ void CreatePeridemBed::command(int narg, char **arg)
       need(1, "perturb");
       perturb = num(iarg++);
       if (!(perturb >= 0.0)) error->all(FLERR, "{}: perturb must be >= 0, got {}", CMD, perturb);
+    } else if (key == "lid") {
+      need(1, "lid");
+      lid_variable = arg[iarg++];
+      if (!utils::is_id(lid_variable))
+        error->all(FLERR, "{}: lid needs a variable name (letters, digits, _), got '{}'", CMD,
+                   lid_variable);
     } else if (key == "rattlers") {
       need(1, "rattlers");
       const std::string v = arg[iarg++];
@@ -169,6 +178,7 @@ void CreatePeridemBed::command(int narg, char **arg)
   // rank 0 packs and writes; every rank learns the outcome (same on any number of ranks)
   std::string message;
   char line[512];
+  double lid = 0.0;
   if (comm->me == 0) {
     try {
       dist.validate();
@@ -239,6 +249,7 @@ void CreatePeridemBed::command(int narg, char **arg)
       const int top = dim - 1;
       double bed[3][2] = {{lo[0], hi[0]}, {lo[1], hi[1]}, {lo[2], hi[2]}};
       bed[top][1] = p.hi[top] + rc / 2; // the bed's lid (container coordinates)
+      lid = bed[top][1];
       double vbed = 1.0, vgrain = 0.0;
       for (int k = 0; k < dim; k++) vbed *= bed[k][1] - bed[k][0];
       for (double r : p.radius) {
@@ -292,6 +303,18 @@ void CreatePeridemBed::command(int narg, char **arg)
   message.resize(len);
   MPI_Bcast(&message[0], len, MPI_CHAR, 0, world);
   if (len > 0) error->all(FLERR, "{}: {}", CMD, message);
+  if (!lid_variable.empty()) {
+    // an internal-style variable: a later create_peridem_bed with the same name resets it
+    MPI_Bcast(&lid, 1, MPI_DOUBLE, 0, world);
+    int ivar = input->variable->find(lid_variable.c_str());
+    if (ivar >= 0 && !input->variable->internalstyle(ivar))
+      error->all(FLERR, "{}: lid variable {} exists and is not internal-style", CMD, lid_variable);
+    if (ivar < 0) {
+      input->one(fmt::format("variable {} internal 0", lid_variable));
+      ivar = input->variable->find(lid_variable.c_str());
+    }
+    input->variable->internal_set(ivar, lid);
+  }
   if (comm->me == 0) {
     utils::logmesg(lmp, line);
     utils::logmesg(lmp, "  {} wall time = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);

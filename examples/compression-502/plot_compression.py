@@ -18,7 +18,9 @@ averages over 5000 steps) and the node dumps RUN/TAG_nodes.STEP.dump, and writes
                           penetration, beside Jha et al.'s (2021) Fig. 23a;
   compression_damage.png  nodes coloured by damage at the paper's four times;
 and prints the table of README.md (penetration, force, bulk damage, damaged grains
-at the four times). Penetration is counted from the first wall position at which
+at the four times) and, for each TAG_state.STEP.dump / TAG_contacts.STEP.dump pair
+that in.fragments wrote from a restart file, the contact load (sum of |f| over a
+grain's contacts with other grains) of the damaged grains against the intact ones. Penetration is counted from the first wall position at which
 the averaged load exceeds ONSET (1 kPa, about 1 % of the paper's plateau), as the
 paper's curve starts where the wall meets the bed.
 """
@@ -55,6 +57,35 @@ def load_curve(run, tag):
     d = d[np.argsort(d[:, 0], kind="stable")]
     keep = np.concatenate([[True], np.diff(d[:, 0]) > 0])  # a resumed leg repeats no step
     return d[keep]
+
+
+def force_chains(run, tag):
+    """Per restart step: damaged grains' mean contact load against the intact grains'."""
+    out = []
+    for path in sorted(glob.glob(os.path.join(run, f"{tag}_state.*.dump"))):
+        step = int(path.split(".")[-2])
+        contacts = os.path.join(run, f"{tag}_contacts.{step}.dump")
+        if not os.path.exists(contacts):
+            continue
+        snap = read_dump(path)[0]
+        ids, mol = column(snap, "id").astype(int), column(snap, "mol").astype(int)
+        dmg = column(snap, "c_dmg[1]")
+        grain_of = dict(zip(ids, mol))
+        grains = np.unique(mol)
+        load = dict.fromkeys(grains.tolist(), 0.0)
+        c = read_dump(contacts)[0]
+        if c["data"] is not None:
+            for a, b, f in c["data"]:
+                ga, gb = grain_of[int(a)], grain_of[int(b)]
+                if ga != gb:
+                    load[ga] += abs(f)
+                    load[gb] += abs(f)
+        damaged = set(mol[dmg > 0].tolist())
+        on_d = [load[g] for g in grains if g in damaged]
+        on_i = [load[g] for g in grains if g not in damaged]
+        if on_d and on_i and np.mean(on_i) > 0:
+            out.append((step, len(on_d), len(grains), np.mean(on_d), np.mean(on_i)))
+    return out
 
 
 def main():
@@ -131,6 +162,9 @@ def main():
           f"{y_on * 1e3:.2f} mm; peak {stress[kmax] / 1e3:.1f} kPa at penetration "
           f"{pen[kmax]:.2f} mm; end: t = {t[-1]:.4f} s, penetration {pen[-1]:.2f} mm, "
           f"{stress[-1] / 1e3:.1f} kPa, bulk damage {bulk[-1]:.4f}")
+    for step, nd, ng, ld, li in force_chains(a.dir, a.tag):
+        print(f"step {step} (t = {step * a.dt:.3f} s): {nd} of {ng} grains damaged; their mean "
+              f"contact load {ld:.4g} N/m, {ld / li:.2f} x the intact grains' {li:.4g} N/m")
     return 0
 
 

@@ -84,3 +84,16 @@ peridem_add_error_test(bed_rows_3d ${_in}/bed/bed_box3d.in
 peridem_add_error_test(bed_tolerance_out_of_range ${_b}
   "create_peridem_bed: packing tolerance 0.5 must be in \\(0, 0.1\\)"
   -var bed "count 10 ${_r} tolerance 0.5")
+
+# lid NAME: the bed's lid height (the "# bed" header's top) as an internal-style variable,
+# reset by the next bed; an existing variable of another style is refused
+add_test(NAME bed_lid_variable
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh /usr/bin/python3 ${PERIDEM_RUN}/bed_lid_check.py
+          $<TARGET_FILE:lmp_peridem> ${_in}/bed/bed_lid.in
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+peridem_add_error_test(bed_lid_not_internal ${_in}/bed/bed_lid.in
+  "create_peridem_bed: lid variable top exists and is not internal-style"
+  -var pre "variable top equal 1")
+peridem_add_error_test(bed_lid_bad_name ${_b}
+  "create_peridem_bed: lid needs a variable name \\(letters, digits, _\\), got 'a-b'"
+  -var bed "count 10 ${_r} lid a-b")
