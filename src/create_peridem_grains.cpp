@@ -429,7 +429,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     }
   }
 
-  // a positions file with labels: keep the lines of this command's label
+  // a positions file with labels: keep the lines of this command's label (label *: all)
   if (!o.at_radius.empty() && o.at.size() != o.at_radius.size())
     error->all(FLERR, "{}: a positions file with radii cannot be mixed with at or other positions",
                CMD);
@@ -440,7 +440,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     std::vector<std::array<double, 3>> at;
     std::vector<double> radius, angle;
     for (std::size_t k = 0; k < o.at.size(); k++)
-      if (o.labels_of_lines[k] == o.label) {
+      if (o.label == "*" || o.labels_of_lines[k] == o.label) {
         at.push_back(o.at[k]);
         radius.push_back(o.at_radius[k]);
         angle.push_back(o.at_angle[k]);

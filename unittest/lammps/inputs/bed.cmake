@@ -67,8 +67,14 @@ add_test(NAME bed.log_says_wall_time
           -var bed "count 10 ${_r} labels disk 1"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 # these write and read bed_error.txt in the same folder: never at the same time (ctest -j)
+# label *: one shape on every line of a bed with several labels (10 disks labelled disk and
+# hexagon become 10 squares)
+add_test(NAME bed_label_star_places_every_line
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "Created 10 peridem grains \\(IDs 1 to 10\\)"
+          $<TARGET_FILE:lmp_peridem> -in ${_b} -log none -echo none
+          -var bed "count 10 ${_r} labels disk 1 hexagon 1" -var grains "square label *")
 set_tests_properties(error.bed_unknown_shape error.bed_no_label_lines bed.log_says_wall_time
-  PROPERTIES RESOURCE_LOCK bed_error_txt)
+  bed_label_star_places_every_line PROPERTIES RESOURCE_LOCK bed_error_txt)
 peridem_add_error_test(bed_rattlers_value ${_b}
   "create_peridem_bed: rattlers must be grow or keep, got 'shake'"
   -var bed "count 10 ${_r} rattlers shake")
