@@ -219,6 +219,9 @@ struct CreatePeridemGrains::Options {
   std::vector<double> bed; // "# bed xlo xhi ylo yhi zlo zhi" of the positions file
   double fit_radius = 0.0; // > 0: scale the shape to this security-disk radius
   bool rotate_given = false;
+  // perturbed_disk: each grain its own outline (seed S + k for the k-th position: Bhattacharya
+  // & Lipton 2023, §7.2 draw one per grain) or all the outline of seed S (outlines same)
+  bool outlines_each = true, outlines_given = false;
   double spacing = 0.0, horizon = 0.0, density = 0.0, scale = 1.0, extrude = 0.0;
   double overlap = 0.0;
   double angle = 0.0; // radians
@@ -266,14 +269,21 @@ void CreatePeridemGrains::command(int narg, char **arg)
   if (!opt.boundary.empty())
     opt.boundary_text = peridem_lmp::read_text_file(lmp, CMD, "polygon", opt.boundary, true);
   std::vector<const Grain *> per_grain;
-  std::map<double, Grain> by_radius; // bed files: one discretization per security-disk radius
+  // one discretization per security-disk radius (bed files), and per grain where each grain
+  // has its own outline
+  const bool each = opt.shape == "perturbed_disk" && opt.outlines_each;
+  const auto seed = opt.params.find("seed");
+  const double seed0 = seed == opt.params.end() ? 1.0 : seed->second; // the shape's default
+  std::map<std::pair<double, std::size_t>, Grain> built;
   for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
     const double r = opt.at_radius.empty() ? 0.0 : opt.at_radius[ig];
-    auto it = by_radius.find(r);
-    if (it == by_radius.end()) {
+    const std::pair<double, std::size_t> key(r, each ? ig : 0);
+    auto it = built.find(key);
+    if (it == built.end()) {
       Options o = opt;
       o.fit_radius = r;
-      it = by_radius.emplace(r, Grain()).first;
+      if (each) o.params["seed"] = seed0 + static_cast<double>(ig);
+      it = built.emplace(key, Grain()).first;
       build(o, it->second);
       check_bonds_per_atom(it->second);
     }
@@ -345,6 +355,11 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     } else if (key == "positions") {
       need(1, "positions");
       read_positions(arg[iarg++], o);
+    } else if (key == "outlines") {
+      need(1, "outlines");
+      o.outlines_each =
+          peridem_lmp::choice(lmp, CMD, "outlines", arg[iarg++], {"each", "same"}) == 0;
+      o.outlines_given = true;
     } else if (key == "label") {
       need(1, "label");
       o.label = arg[iarg++];
@@ -469,6 +484,8 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
 void CreatePeridemGrains::check(const Options &o)
 {
   if (o.at.empty()) error->all(FLERR, "{}: no grain position given (use at x y z)", CMD);
+  if (o.outlines_given && o.shape != "perturbed_disk")
+    error->all(FLERR, "{}: outlines applies to perturbed_disk grains, not {}", CMD, o.shape);
   if (o.axis_given && o.rotate_seed > 0)
     error->all(FLERR, "{}: axis applies to a fixed rotate angle, not to rotate random", CMD);
   if (o.axis_given && domain->dimension == 2 && (o.axis[0] != 0.0 || o.axis[1] != 0.0))

@@ -76,3 +76,14 @@ peridem_add_error_test(grains_axis_random ${_g}/grain_box.in
 peridem_add_error_test(grains_axis_2d ${_g}/grain_box.in
   "create_peridem_grains: a 2d grain rotates about z only; axis 1 0 0 needs dimension 3"
   -var grain "disk radius 1 ${_ok} rotate 30 axis 1 0 0")
+
+# perturbed_disk: each grain of one command its own outline (seed S + k; Bhattacharya & Lipton
+# 2023, §7.2), or all the seed-S outline with outlines same; outlines on another shape is refused
+foreach(_o each same)
+  add_test(NAME grains_perturbed_outlines_${_o}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh $<TARGET_FILE:lmp_peridem>
+            -in ${_g}/perturbed_outlines.in -log none -echo none -var outlines ${_o})
+endforeach()
+peridem_add_error_test(grains_outlines_not_perturbed ${_g}/grain_box.in
+  "create_peridem_grains: outlines applies to perturbed_disk grains, not disk"
+  -var grain "disk radius 1 ${_ok} outlines same")
