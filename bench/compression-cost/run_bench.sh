@@ -10,9 +10,9 @@
 # Benchmark: the cost study of Jha et al. (2021, §4.4, Fig. 24): the first STEPS
 # (10,000) steps of examples/compression-502 (stage settle: grains in their rows,
 # falling) with 25, 51, 96, 200 and 403 grains, on 1 and 2 ranks, at two
-# resolutions: "paper" (h = 0.11 mm, eps = 0.6 mm = 5.5h: about 205 nodes per grain,
-# the paper's node counts of 6515-82430) and "example" (the example's h = 0.2 mm,
-# eps = 3h: 61 nodes per grain). Prints a markdown table: nodes, bonds, the paper's
+# resolutions: "paper" (h = 0.11 mm, eps = 0.6 mm = 5.5h: 230-250 nodes per grain,
+# near the paper's 6515-82430 nodes) and "example" (the example's h = 0.2 mm,
+# eps = 3h: about 75 nodes per grain). Prints a markdown table: nodes, bonds, the paper's
 # DOF, loop time, node-steps/s (wall and CPU), the contact (Pair), bond and
 # neighbour shares of the loop, and node-steps/s per core against the PeriDEM
 # reference code's 7.9e4 node-steps/s on one thread (bench/two-disc).

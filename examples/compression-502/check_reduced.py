@@ -71,7 +71,7 @@ def run(cmd, out, log):
 def grains_of(path):
     snap = read_dump(path)[0]
     ids, mol = column(snap, "id").astype(int), column(snap, "mol").astype(int)
-    return dict(zip(ids, mol)), snap
+    return dict(zip(ids, mol))
 
 
 def grain_contact_loads(path, grain_of):
@@ -116,7 +116,7 @@ def main():
     n_s, b_s = int(setup_s.group(2)), int(setup_s.group(3))
     n_c, b_c = int(setup_c.group(2)), int(setup_c.group(3))
     step0 = int(done_s.group(2))
-    grain_of, first = grains_of(os.path.join(a.out, f"red_nodes.{step0}.dump"))
+    grain_of = grains_of(os.path.join(a.out, f"red_nodes.{step0}.dump"))
     n_grains = len(set(grain_of.values()))
     print(f"settle: {n_s} nodes, {b_s} bonds, {done_s.group(4)} broken; compress starts with "
           f"{n_c} nodes, {b_c} bonds, {n_grains} grains")

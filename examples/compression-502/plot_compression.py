@@ -103,8 +103,9 @@ def main():
     d = load_curve(a.dir, a.tag)
     step, load, ywall, bulk = d[:, 0], d[:, 1], d[:, 3], d[:, 4]
     stress = load / a.W
-    k_on = int(np.argmax(stress > ONSET))
-    y_on = ywall[k_on]
+    onset = bool(np.any(stress > ONSET))
+    k_on = int(np.argmax(stress > ONSET)) if onset else 0
+    y_on = ywall[k_on]  # without an onset: the wall's start
     pen = (y_on - ywall) * 1e3  # mm
     t = step * a.dt
 
@@ -120,7 +121,8 @@ def main():
                     xytext=(-14, 4))
         rows.append((ti, pen[k], stress[k], bulk[k], int(round(ti / a.dt))))
     ax.set_xlim(left=-0.2)
-    ax.set_xlabel("wall penetration (mm)")
+    ax.set_xlabel("wall penetration (mm)" if onset else
+                  f"wall displacement from its start at {y_on * 1e3:.2f} mm (no onset)")
     ax.set_ylabel("force per unit area on the top wall (kPa)")
     ax.legend(loc="upper left", fontsize=8)
     ax.grid(alpha=0.3)
@@ -155,10 +157,12 @@ def main():
               f"{PAPER_TIMES[i][1]:.0f} | {bk:.4f} | {int(gany.sum())} of {len(grains)} | "
               f"{int((gmean > 0.1).sum())} |")
     fig.tight_layout()
-    fig.savefig(os.path.join(a.out, "compression_damage.png"), dpi=130)
+    fig.savefig(os.path.join(a.out, "compression_damage.png"), dpi=80)
     plt.close(fig)
     kmax = int(np.argmax(stress))
-    print(f"onset (averaged load > {ONSET / 1e3:.0f} kPa) at t = {t[k_on]:.4f} s, wall at "
+    print((f"onset (averaged load > {ONSET / 1e3:.0f} kPa) at t = {t[k_on]:.4f} s, wall at "
+           if onset else f"no onset (averaged load > {ONSET / 1e3:.0f} kPa): penetration "
+           f"counted from the wall's start, t = {t[k_on]:.4f} s, at ") +
           f"{y_on * 1e3:.2f} mm; peak {stress[kmax] / 1e3:.1f} kPa at penetration "
           f"{pen[kmax]:.2f} mm; end: t = {t[-1]:.4f} s, penetration {pen[-1]:.2f} mm, "
           f"{stress[-1] / 1e3:.1f} kPa, bulk damage {bulk[-1]:.4f}")
