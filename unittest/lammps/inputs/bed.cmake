@@ -100,6 +100,7 @@ add_test(NAME bed_lid_variable
 peridem_add_error_test(bed_lid_not_internal ${_in}/bed/bed_lid.in
   "create_peridem_bed: lid variable top exists and is not internal-style"
   -var pre "variable top equal 1")
+set_tests_properties(bed_lid_variable error.bed_lid_not_internal PROPERTIES RESOURCE_LOCK bed_lid_txt)
 peridem_add_error_test(bed_lid_bad_name ${_b}
   "create_peridem_bed: lid needs a variable name \\(letters, digits, _\\), got 'a-b'"
   -var bed "count 10 ${_r} lid a-b")
