@@ -272,8 +272,18 @@ void CreatePeridemGrains::command(int narg, char **arg)
   // one discretization per security-disk radius (bed files), and per grain where each grain
   // has its own outline
   const bool each = opt.shape == "perturbed_disk" && opt.outlines_each;
-  const auto seed = opt.params.find("seed");
-  const double seed0 = seed == opt.params.end() ? 1.0 : seed->second; // the shape's default
+  double seed0 = 0.0; // the seed given, else the shape table's default
+  if (each) {
+    const auto given = opt.params.find("seed");
+    if (given != opt.params.end()) {
+      seed0 = given->second;
+    } else {
+      for (const auto &shape : peridem::builtin_shapes())
+        if (shape.name == opt.shape)
+          for (const auto &par : shape.parameters)
+            if (par.name == "seed") seed0 = par.default_value;
+    }
+  }
   std::map<std::pair<double, std::size_t>, Grain> built;
   for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
     const double r = opt.at_radius.empty() ? 0.0 : opt.at_radius[ig];
