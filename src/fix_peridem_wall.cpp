@@ -242,8 +242,9 @@ int FixPeridemWall::parse_face(const char *word) const
 
 /* ----------------------------------------------------------------------
    'contact pair': each node meets the walls with the law of pair_coeff I I
-   of its type I (repulsion, nodal or restitution damping, friction;
-   damping between grain centres does not act on walls)
+   of its type I (repulsion, nodal or restitution damping, friction);
+   with damping centroid the grain's centre is damped against each wall it
+   touches (Jha et al. 2021, §3.2; lmp_peridem_wall_damping.h)
 ------------------------------------------------------------------------- */
 
 void FixPeridemWall::take_contact_from_pair()
@@ -263,6 +264,11 @@ void FixPeridemWall::take_contact_from_pair()
                  STYLE, t, t);
     type_params[t] = params[t];
   }
+  const auto *reach = static_cast<const double *>(pair->extract("peridem_centroid_reach", dim));
+  if (!reach || dim != 1)
+    error->all(FLERR, "{}: pair_style peridem/contact gave no centroid damping reach", STYLE);
+  centroid_damping.set_types(type_params, std::vector<double>(reach, reach + atom->ntypes + 1));
+  // (grain IDs: pair_style peridem/contact needs atom_style peridem)
 }
 
 /* ----------------------------------------------------------------------
@@ -546,6 +552,9 @@ void FixPeridemWall::post_force(int vflag)
   if (use_near && near_stale()) build_near(box);
   const int ncand = use_near ? (int)near.size() : nlocal;
   const int *cand = near.data();
+  const bool damp_centres = contact_from_pair && centroid_damping.any();
+  const tagint *molecule = atom->molecule;
+  if (damp_centres) centroid_damping.clear();
 
   for (int ii = 0; ii < ncand; ii++) {
     const int i = use_near ? cand[ii] : ii;
@@ -553,11 +562,13 @@ void FixPeridemWall::post_force(int vflag)
     const peridem::ContactParams &params =
         contact_from_pair ? type_params[type[i]] : contact.params;
     const double Rc = params.Rc;
+    const double reach = damp_centres ? centroid_damping.reach(type[i]) : 0.0;
     int wmin = -1;
     double dmin = Rc;
     for (int w = 0; w < nwalls; w++) {
       if (!box.active[w]) continue;
       const double d = peridem::wall_distance(box, w, x[i]);
+      if (d < reach && d > -Rc) centroid_damping.touch(molecule[i], w, type[i]);
       if (d < dmin) {
         dmin = d;
         wmin = w;
@@ -592,33 +603,72 @@ void FixPeridemWall::post_force(int vflag)
     // not vflag_either: Fix::v_setup() of this LAMMPS (29 Sep 2021) leaves it unset, so the
     // virial was tallied only on steps after a step without virial (and from garbage at setup)
     if (vflag_global || vflag_atom) {
-      // each wall acts as a partner on its plane: virial del (x) f, del from the plane to the
-      // node along the wall's axis, f the force of that wall on the node (-reaction)
       double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-      for (int w = 0; w < nwalls; w++) {
-        const double *fw = res.f_wall[w];
-        if (fw[0] == 0.0 && fw[1] == 0.0 && fw[2] == 0.0) continue;
-        const int k = w / 2;
-        const double del = x[i][k] - walls[w].pos;
-        vir[k] -= del * fw[k];
-        if (k == 0) {
-          vir[3] -= del * fw[1];
-          vir[4] -= del * fw[2];
-        } else if (k == 1) {
-          vir[3] -= del * fw[0];
-          vir[5] -= del * fw[2];
-        } else {
-          vir[4] -= del * fw[0];
-          vir[5] -= del * fw[1];
-        }
-      }
+      for (int w = 0; w < nwalls; w++) add_wall_virial(w, x[i], res.f_wall[w], vir);
       v_tally(i, vir);
     }
   }
+  if (damp_centres) power += apply_centroid_damping(vel);
   if (!in_setup) dissipated_local -= power * update->dt;
   local[DISSIPATED] = dissipated_local;
   reduced = 0;
   if (servo_any) servo_control();
+}
+
+/* ----------------------------------------------------------------------
+   each wall acts as a partner on its plane: virial del (x) f, del from the
+   plane to the node along the wall's axis, f the force of wall w on the
+   node (-reaction), added to vir
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::add_wall_virial(int w, const double *xi, const double *fw, double *vir) const
+{
+  if (fw[0] == 0.0 && fw[1] == 0.0 && fw[2] == 0.0) return;
+  const int k = w / 2;
+  const double del = xi[k] - walls[w].pos;
+  vir[k] -= del * fw[k];
+  if (k == 0) {
+    vir[3] -= del * fw[1];
+    vir[4] -= del * fw[2];
+  } else if (k == 1) {
+    vir[3] -= del * fw[0];
+    vir[5] -= del * fw[2];
+  } else {
+    vir[4] -= del * fw[0];
+    vir[5] -= del * fw[1];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   contact pair with damping centroid: the dashpot between the centre of
+   each grain and each wall it touches (the touches were collected in
+   post_force), its forces on the nodes, the wall reactions and the
+   virial; returns the power on rank 0 (lmp_peridem_wall_damping.h)
+------------------------------------------------------------------------- */
+
+double FixPeridemWall::apply_centroid_damping(const double *vel)
+{
+  double outward_normal[peridem::kMaxWalls][3] = {}, velocity[peridem::kMaxWalls][3] = {};
+  for (int w = 0; w < nwalls; w++) {
+    outward_normal[w][w / 2] = outward(w);
+    for (int k = 0; k < 3; k++) velocity[w][k] = walls[w].shear[k];
+    velocity[w][w / 2] = walls[w].vel;
+  }
+  double **x = atom->x;
+  double **f = atom->f;
+  const bool tally = vflag_global || vflag_atom;
+  return centroid_damping.apply(lmp, vel, outward_normal, velocity,
+                                [&](int i, int w, const double *fi) {
+                                  for (int k = 0; k < 3; k++) {
+                                    f[i][k] += fi[k];
+                                    local[3 * w + k] -= fi[k];
+                                  }
+                                  if (tally) {
+                                    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+                                    add_wall_virial(w, x[i], fi, vir);
+                                    v_tally(i, vir);
+                                  }
+                                });
 }
 
 /* ----------------------------------------------------------------------
@@ -648,6 +698,7 @@ void FixPeridemWall::build_near(const peridem::WallBox &box)
   if (contact_from_pair)
     for (std::size_t t = 1; t < type_params.size(); t++)
       rc_max = std::max(rc_max, type_params[t].Rc);
+  rc_max = std::max(rc_max, centroid_damping.max_reach());
   const double reach = rc_max + 1.5 * neighbor->skin;
   double **x = atom->x;
   const int nlocal = atom->nlocal;

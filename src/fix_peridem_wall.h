@@ -29,6 +29,7 @@ FixStyle(peridem/wall,FixPeridemWall);
 
 #include "fix.h"
 #include "lmp_peridem_contact.h"
+#include "lmp_peridem_wall_damping.h"
 
 #include <vector>
 #include "peridem_wall_geometry.h"
@@ -89,6 +90,10 @@ class FixPeridemWall : public Fix {
   // v(n - 1/2) in a run's setup (fix peridem/vhistory), where the wall or the pair dissipates
   class FixPeridemVelocityHistory *history = nullptr;
   std::vector<peridem::ContactParams> type_params;
+  // contact pair: pair_coeff I I with damping centroid also damps grain centres at the walls
+  peridem_lmp::WallCentroidDamping centroid_damping;
+  double apply_centroid_damping(const double *vel);
+  void add_wall_virial(int w, const double *xi, const double *fw, double *vir) const;
   int lost_error;       // 1: a node beyond a wall ends the run, 0: counted and warned
   int lost_delete;      // 1: nodes beyond a wall or the box are deleted with their bonds
   bigint deleted_total; // nodes deleted so far (lost delete), all ranks

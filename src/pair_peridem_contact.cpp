@@ -852,6 +852,15 @@ void *PairPeridemContact::extract(const char *str, int &dim)
       if (type_set(t, t)) diag_params[t] = spec[t][t].params;
     return (void *)diag_params.data();
   }
+  // per type t: the reach of damping centroid of pair_coeff t t (0: none), for the dashpot
+  // between grain centres and walls of fix peridem/wall 'contact pair'
+  if (strcmp(str, "peridem_centroid_reach") == 0) {
+    dim = 1;
+    diag_reach.assign(atom->ntypes + 1, 0.0);
+    for (int t = 1; t <= atom->ntypes; t++)
+      if (type_set(t, t) && spec[t][t].centroid) diag_reach[t] = spec[t][t].centroid_reach();
+    return (void *)diag_reach.data();
+  }
   return nullptr;
 }
 

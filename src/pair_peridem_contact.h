@@ -65,6 +65,7 @@ class PairPeridemContact : public Pair {
   int self_contact;  // 1: nodes of one grain without an intact bond touch too
   double dissipated; // energy dissipated by damping and friction on this rank
   std::vector<peridem::ContactParams> diag_params; // extract("peridem_contact_params")
+  std::vector<double> diag_reach;                  // extract("peridem_centroid_reach")
 
   void allocate();
   void mix(int i, int j);

@@ -74,6 +74,26 @@ add_test(NAME wall_rc_above_horizon_warns
 add_test(NAME wall_contact_from_pair
   COMMAND sh -c "$<TARGET_FILE:lmp_peridem> -in ${_in}/wall_contact_pair.in -var mode own -log own.log -screen none && $<TARGET_FILE:lmp_peridem> -in ${_in}/wall_contact_pair.in -var mode pair -log pair.log -screen none && grep -q 'f_box\\[15\\]' pair.log && python3 ${PERIDEM_RUN}/thermo_compare.py own.log pair.log --rtol 0"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+# contact pair with damping centroid: the dashpot between the grain centre and the wall
+# (Jha et al. 2021, §3.2) equals eq. 26-29 with M_eq = 2 M at the first step (approach, a
+# moving wall) and vanishes for a receding or sliding grain; a damped drop conserves energy
+# with the dissipated work counted; 1 and 2 ranks
+foreach(_np 1 2)
+  foreach(_case approach recede wall slide)
+    add_test(NAME wall_centroid_damping_${_case}_np${_np}
+      COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "PERIDEM-WALL-DAMPING case ${_case}"
+              ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+              -in ${_in}/wall_centroid_damping.in -var case ${_case}
+              -var potentials ${PROJECT_SOURCE_DIR}/potentials -log none)
+    set_tests_properties(wall_centroid_damping_${_case}_np${_np} PROPERTIES TIMEOUT 120)
+  endforeach()
+  add_test(NAME wall_centroid_energy_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex PERIDEM-WALL-ENERGY
+            ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${_in}/wall_centroid_energy.in
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials -log none)
+  set_tests_properties(wall_centroid_energy_np${_np} PROPERTIES TIMEOUT 300)
+endforeach()
 peridem_wall_error(contact_pair_without_pair "ylo 0.0 contact pair"
   "fix peridem/wall: contact pair needs pair_style peridem/contact")
 peridem_wall_error(contact_pair_and_keywords "ylo 0.0 contact pair Kn 1 Rc 0.5"
