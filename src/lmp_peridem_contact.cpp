@@ -171,6 +171,15 @@ int ContactParser::consume_one(int narg, char **arg, int iarg)
     spec.centroid_range = positive(narg, arg, iarg + 1, "centroid_range");
     return 2;
   }
+  if (key == "centroid_bounding") {
+    if (!centroid_allowed)
+      lmp->error->all(FLERR,
+                      "{}: centroid_bounding belongs to damping centroid, which is available in "
+                      "pair_coeff of pair_style peridem/contact only",
+                      command);
+    spec.centroid_bounding = positive(narg, arg, iarg + 1, "centroid_bounding");
+    return 2;
+  }
   if (key == "friction") {
     if (iarg + 1 >= narg)
       lmp->error->all(FLERR, "{}: friction needs none, regularized mu or coulomb mu", command);
@@ -254,6 +263,14 @@ ContactSpec ContactParser::finish(int dimension) const
     if (out.centroid_range < p.Rc)
       error->all(FLERR, "{}: centroid_range {} must be >= the contact radius Rc = {}", command,
                  out.centroid_range, p.Rc);
+  }
+
+  if (out.centroid_bounding > 0.0) {
+    if (!out.centroid)
+      error->all(FLERR, "{}: centroid_bounding {} needs damping centroid eps_n C", command,
+                 out.centroid_bounding);
+    if (out.centroid_range > 0.0)
+      error->all(FLERR, "{}: centroid_bounding and centroid_range exclude each other", command);
   }
 
   if (out.horizon > 0.0 && p.Rc > out.horizon && lmp->comm->me == 0)
@@ -367,7 +384,11 @@ std::string describe_contact(const ContactSpec &spec)
     damping = fmt::format("nodal r_d = {}", p.r_d);
   else if (p.damping == peridem::ContactDamping::Restitution)
     damping = fmt::format("restitution eps_n = {} C = {}", p.eps_n, p.C);
-  if (spec.centroid)
+  if (spec.centroid && spec.centroid_bounding > 0.0)
+    damping = fmt::format("centroid eps_n = {} C = {} (grains touch while their centres are "
+                          "closer than b + b' + {} Rc, b the bounding radii)",
+                          p.eps_n, p.C, spec.centroid_bounding);
+  else if (spec.centroid)
     damping = fmt::format("centroid eps_n = {} C = {} (grains touch below {})", p.eps_n, p.C,
                           spec.centroid_reach());
   if (spec.centroid || p.damping == peridem::ContactDamping::Restitution)

@@ -30,6 +30,9 @@
                              Jha et al. 2021, eq. 26-30; pair_style peridem/contact only)
      centroid_range D        damping centroid acts while two nodes of the
                              grains are closer than D >= R_c (default R_c)
+     centroid_bounding F     damping centroid acts while the grains' centres
+                             are closer than b + b' + F R_c (bounding radii;
+                             Jha et al.'s code, F = 1.01)
      kappa k                 the dashpot's kappa (eq. 23, 28) given directly,
                              instead of the bulk modulus behind K_n
      friction none | regularized mu | coulomb mu
@@ -71,6 +74,11 @@ struct ContactSpec {
   // centroid_range D: the dashpot acts while two nodes of the grains are
   // closer than D (0: R_c, eq. 27 as written; D >= R_c)
   double centroid_range = 0.0;
+  // centroid_bounding F: instead, the dashpot acts while the grains' centres are closer than
+  // b + b' + F R_c, b the bounding radius of each grain (the largest distance of its nodes
+  // from its centre in the reference configuration); Jha et al.'s (2021) code does this
+  // with F = 1.01 (0: off)
+  double centroid_bounding = 0.0;
   // distance below which two grains count as touching for the dashpot
   double centroid_reach() const { return centroid_range > 0.0 ? centroid_range : params.Rc; }
 };

@@ -32,7 +32,7 @@ namespace peridem_lmp {
 enum RestartTag : int {
   RESTART_BOND_PERIDEM = 0x50444201,     // bond_style peridem: format 1
   RESTART_BOND_PERIDEM_LPS = 0x50444c01, // bond_style peridem/lps: format 1
-  RESTART_PAIR_CONTACT = 0x50445002,     // pair_style peridem/contact: format 2
+  RESTART_PAIR_CONTACT = 0x50445003,     // pair_style peridem/contact: format 3
 };
 
 // The format version of a tag (its low byte).

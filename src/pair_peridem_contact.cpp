@@ -217,7 +217,8 @@ void PairPeridemContact::compute(int eflag, int vflag)
 
     // two grains touch (closer than R_c, or centroid_range): damping
     // centroid of this grain pair (Jha et al. 2021, eq. 27)
-    if (sp.centroid && molecule[i] != molecule[j] && rsq < touchsq[itype][jtype]) {
+    if (sp.centroid && sp.centroid_bounding == 0.0 && molecule[i] != molecule[j] &&
+        rsq < touchsq[itype][jtype]) {
       if (molecule[i] < molecule[j])
         touch_local.push_back({molecule[i], molecule[j], itype, jtype});
       else
@@ -275,15 +276,18 @@ void PairPeridemContact::compute_centroid_damping(bool tally_virial)
                     touch_local.end());
   const int mine = 4 * (int)touch_local.size();
   const int total = gather_counts(mine);
-  if (total == 0) return; // no grains in contact anywhere: nothing to do
+  // no grains in contact anywhere: nothing to do (unless grains touch by their bounding radii)
+  if (total == 0 && !bounding_on) return;
   touch_all.resize(total / 4);
-  MPI_Allgatherv(touch_local.empty() ? nullptr : touch_local[0].data(), mine, MPI_LMP_TAGINT,
-                 touch_all[0].data(), counts.data(), displs.data(), MPI_LMP_TAGINT, world);
-  std::sort(touch_all.begin(), touch_all.end());
-  touch_all.erase(std::unique(touch_all.begin(), touch_all.end(), same_grains), touch_all.end());
+  if (total > 0)
+    MPI_Allgatherv(touch_local.empty() ? nullptr : touch_local[0].data(), mine, MPI_LMP_TAGINT,
+                   touch_all[0].data(), counts.data(), displs.data(), MPI_LMP_TAGINT, world);
 
   // centres of mass and velocities of all grains (eq. 26)
   sum_grain_centres();
+  if (bounding_on) add_bounding_touches();
+  std::sort(touch_all.begin(), touch_all.end());
+  touch_all.erase(std::unique(touch_all.begin(), touch_all.end(), same_grains), touch_all.end());
   const int ngrains = (int)grain_ids.size();
   grain_force.assign(3 * ngrains, 0.0);
   const bool tally = tally_virial && comm->me == 0;
@@ -334,6 +338,101 @@ void PairPeridemContact::compute_centroid_damping(bool tally_virial)
     f[i][1] += share * fg[1];
     f[i][2] += share * fg[2];
   }
+}
+
+/* ----------------------------------------------------------------------
+   centroid_bounding F (Jha et al.'s code, prashjha/PeriDEM demModel.cpp):
+   two grains touch while their centres are closer than b + b' + F R_c, b
+   the bounding radius of each grain. Every rank has all centres
+   (grain_sum), so every rank finds the same pairs: sorted by the centres'
+   x, each grain is checked against those within reach along x (all pairs
+   when x is periodic)
+------------------------------------------------------------------------- */
+
+void PairPeridemContact::add_bounding_touches()
+{
+  if (bounding_stale) compute_bounding_radii();
+  const int ngrains = (int)grain_ids.size();
+  double reach_max = 0.0, b_max = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (spec[i][j].centroid && spec[i][j].centroid_bounding > 0.0)
+        reach_max = std::max(reach_max, spec[i][j].centroid_bounding * spec[i][j].params.Rc);
+  order.clear();
+  for (int g = 0; g < ngrains; g++)
+    if (grain_sum[7 * g] > 0.0 && grain_type[g] > 0) {
+      order.push_back(g);
+      b_max = std::max(b_max, bounding[g]);
+    }
+  auto cx = [&](int g) { return grain_sum[7 * g + 1] / grain_sum[7 * g]; };
+  const bool sweep = !domain->xperiodic;
+  if (sweep) std::sort(order.begin(), order.end(), [&](int a, int b) { return cx(a) < cx(b); });
+  const int n = (int)order.size();
+  for (int u = 0; u < n; u++) {
+    const int a = order[u];
+    const double *sa = &grain_sum[7 * a];
+    for (int w = u + 1; w < n; w++) {
+      const int b = order[w];
+      const double *sb = &grain_sum[7 * b];
+      double sep[3];
+      for (int k = 0; k < 3; k++) sep[k] = sb[1 + k] / sb[0] - sa[1 + k] / sa[0];
+      if (sweep && sep[0] > bounding[a] + b_max + reach_max) break;
+      const int ta = grain_type[a], tb = grain_type[b];
+      const peridem_lmp::ContactSpec &sp = spec[ta][tb];
+      if (!sp.centroid || !(sp.centroid_bounding > 0.0)) continue;
+      domain->minimum_image(sep[0], sep[1], sep[2]);
+      const double d = bounding[a] + bounding[b] + sp.centroid_bounding * sp.params.Rc;
+      if (sep[0] * sep[0] + sep[1] * sep[1] + sep[2] * sep[2] >= d * d) continue;
+      if (grain_ids[a] < grain_ids[b])
+        touch_all.push_back({grain_ids[a], grain_ids[b], ta, tb});
+      else
+        touch_all.push_back({grain_ids[b], grain_ids[a], tb, ta});
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   bounding radius of every grain: the largest distance of its nodes from
+   its centre of mass in the reference configuration (x0), and the largest
+   atom type of its nodes (the type pair of the dashpot); at each run and
+   when the grains change
+------------------------------------------------------------------------- */
+
+void PairPeridemContact::compute_bounding_radii()
+{
+  if (grains_stale) build_grain_index();
+  const int ngrains = (int)grain_ids.size();
+  const int nlocal = atom->nlocal;
+  double **x0 = atom->x0;
+  const double *rmass = atom->rmass;
+  const int *type = atom->type;
+  std::vector<double> local(4 * ngrains, 0.0), centre(4 * ngrains);
+  std::vector<int> gi(nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    const int g = gi[i] = grain_index(atom->molecule[i]);
+    if (g < 0) continue;
+    local[4 * g] += rmass[i];
+    for (int k = 0; k < 3; k++) local[4 * g + 1 + k] += rmass[i] * x0[i][k];
+  }
+  MPI_Allreduce(local.data(), centre.data(), 4 * ngrains, MPI_DOUBLE, MPI_SUM, world);
+  std::vector<double> rmax(ngrains, 0.0);
+  std::vector<int> tmax(ngrains, 0);
+  for (int i = 0; i < nlocal; i++) {
+    const int g = gi[i];
+    if (g < 0 || !(centre[4 * g] > 0.0)) continue;
+    double r2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+      const double d = x0[i][k] - centre[4 * g + 1 + k] / centre[4 * g];
+      r2 += d * d;
+    }
+    rmax[g] = std::max(rmax[g], std::sqrt(r2));
+    tmax[g] = std::max(tmax[g], type[i]);
+  }
+  bounding.resize(ngrains);
+  grain_type.resize(ngrains);
+  MPI_Allreduce(rmax.data(), bounding.data(), ngrains, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(tmax.data(), grain_type.data(), ngrains, MPI_INT, MPI_MAX, world);
+  bounding_stale = false;
 }
 
 /* ----------------------------------------------------------------------
@@ -392,6 +491,7 @@ void PairPeridemContact::build_grain_index()
     for (tagint g = 0; g < ngrains; g++) grain_table[grain_ids[g]] = (int)g;
   }
   grains_stale = false;
+  bounding_stale = true;
 }
 
 /* ----------------------------------------------------------------------
@@ -543,6 +643,9 @@ void PairPeridemContact::mix(int i, int j)
   m.centroid_range = (a.centroid_range > 0.0 || b.centroid_range > 0.0)
                          ? 0.5 * (a.centroid_reach() + b.centroid_reach())
                          : 0.0;
+  m.centroid_bounding = (a.centroid_bounding > 0.0 && b.centroid_bounding > 0.0)
+                            ? 0.5 * (a.centroid_bounding + b.centroid_bounding)
+                            : 0.0;
   m.origin = fmt::format("mixed from types {} and {}", i, j);
   m.kappa_origin = fmt::format("harmonic mean of types {} and {}, Jha et al. 2021 eq. 25", i, j);
   spec[i][j] = spec[j][i] = m;
@@ -554,7 +657,8 @@ double PairPeridemContact::init_one(int i, int j)
 {
   if (!setflag[i][j]) mix(i, j);
   const peridem_lmp::ContactSpec &s = spec[i][j];
-  const double touch = s.centroid ? s.centroid_reach() : 0.0;
+  const double touch = s.centroid && s.centroid_bounding == 0.0 ? s.centroid_reach() : 0.0;
+  if (s.centroid && s.centroid_bounding > 0.0) bounding_on = 1;
   touchsq[i][j] = touchsq[j][i] = touch * touch;
   cut[i][j] = cut[j][i] = std::max(s.params.Rc, touch);
   return cut[i][j];
@@ -600,6 +704,7 @@ void PairPeridemContact::init_style()
     }
   // the grains (molecule IDs) may have changed since the last run
   grains_stale = true;
+  bounding_on = 0; // set by init_one for type pairs with centroid_bounding
   if (dissipative && !comm->ghost_velocity)
     error->all(FLERR, "{} with damping or friction needs ghost velocities: use comm_modify vel yes",
                STYLE);
@@ -775,16 +880,18 @@ void PairPeridemContact::write_restart(FILE *fp)
       if (!setflag[i][j]) continue;
       const peridem_lmp::ContactSpec &s = spec[i][j];
       peridem_lmp::write_contact_params(fp, s.params);
-      const double extra[6] = {s.bulk_modulus,   s.horizon,
-                               s.density,        s.centroid ? 1.0 : 0.0,
-                               s.centroid_range, (double)peridem::kn_exponent(s.kn_form)};
-      fwrite(extra, sizeof(double), 6, fp);
+      const double extra[7] = {s.bulk_modulus,     s.horizon,
+                               s.density,          s.centroid ? 1.0 : 0.0,
+                               s.centroid_range,   (double)peridem::kn_exponent(s.kn_form),
+                               s.centroid_bounding};
+      fwrite(extra, sizeof(double), 7, fp);
     }
 }
 
 void PairPeridemContact::read_restart(FILE *fp)
 {
-  // format 1 (raw struct) is still read; format 2 writes field by field
+  // format 1 (raw struct) is still read; format 2 writes field by field; format 3 adds
+  // centroid_bounding (0 in older files)
   const int format =
       peridem_lmp::read_restart_version(lmp, fp, peridem_lmp::RESTART_PAIR_CONTACT, 1, STYLE);
   read_restart_settings(fp);
@@ -797,19 +904,22 @@ void PairPeridemContact::read_restart(FILE *fp)
       peridem_lmp::ContactSpec &s = spec[i][j];
       s.params = format == 1 ? peridem_lmp::read_contact_params_v1(lmp, fp, STYLE)
                              : peridem_lmp::read_contact_params(lmp, fp, STYLE);
-      double extra[6];
-      if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), 6, fp, nullptr, error);
-      MPI_Bcast(extra, 6, MPI_DOUBLE, 0, world);
+      double extra[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      const int nextra = format >= 3 ? 7 : 6;
+      if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), nextra, fp, nullptr, error);
+      MPI_Bcast(extra, nextra, MPI_DOUBLE, 0, world);
       constexpr double big = std::numeric_limits<double>::max();
       peridem_lmp::check_restart_values(lmp, STYLE, "material constants", extra, 3, 0.0, big);
       peridem_lmp::check_restart_values(lmp, STYLE, "centroid settings", extra + 3, 2, 0.0, big);
       peridem_lmp::check_restart_values(lmp, STYLE, "Kn form", extra + 5, 1, 4.0, 5.0);
+      peridem_lmp::check_restart_values(lmp, STYLE, "centroid settings", extra + 6, 1, 0.0, big);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
       s.density = extra[2];
       s.centroid = extra[3] != 0.0;
       s.centroid_range = extra[4];
       s.kn_form = extra[5] == 4.0 ? peridem::KnForm::Eps4 : peridem::KnForm::Eps5;
+      s.centroid_bounding = extra[6];
       s.origin = s.kappa_origin = "restart file";
       spec[j][i] = s;
     }

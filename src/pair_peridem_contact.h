@@ -116,6 +116,14 @@ class PairPeridemContact : public Pair {
   void build_grain_index();
   void sum_grain_centres();
   void compute_centroid_damping(bool tally_virial);
+  // centroid_bounding: grain pairs by the distance of their centres (Jha et al.'s code)
+  int bounding_on = 0;          // some type pair uses centroid_bounding
+  bool bounding_stale = true;   // recompute bounding and grain_type before the next use
+  std::vector<double> bounding; // bounding radius of each grain (reference configuration)
+  std::vector<int> grain_type;  // largest atom type of each grain's nodes
+  std::vector<int> order;       // grains sorted by centre x
+  void add_bounding_touches();
+  void compute_bounding_radii();
 };
 
 } // namespace LAMMPS_NS

@@ -66,6 +66,18 @@ peridem_contact_error(centroid_range_zero "pair_coeff: centroid_range must be > 
 peridem_add_error_test(centroid_range_in_wall ${_in}/wall_error.in
   "fix peridem/wall: centroid_range belongs to damping centroid, which is available in pair_coeff"
   -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 1 centroid_range 0.6" -var nsteps 0)
+# centroid_bounding: only with damping centroid, not with centroid_range, not for walls
+peridem_contact_error(centroid_bounding_without_centroid
+  "pair_coeff: centroid_bounding 1.01 needs damping centroid eps_n C"
+  -var coeff "* * Kn 1 horizon 0.5 Rc 0.2 centroid_bounding 1.01")
+peridem_contact_error(centroid_bounding_and_range
+  "pair_coeff: centroid_bounding and centroid_range exclude each other"
+  -var coeff "* * Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_range 0.3 centroid_bounding 1.01")
+peridem_contact_error(centroid_bounding_zero "pair_coeff: centroid_bounding must be > 0, not 0"
+  -var coeff "* * Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_bounding 0")
+peridem_add_error_test(centroid_bounding_in_wall ${_in}/wall_error.in
+  "fix peridem/wall: centroid_bounding belongs to damping centroid, which is available in pair_coeff"
+  -var wall "ylo 0.0 Kn 1 Rc 0.5 horizon 1 centroid_bounding 1.01" -var nsteps 0)
 # centroid_range of unlike types without their own pair_coeff: the mean of
 # the two reaches (R_c where a type has no range), like R_c itself
 add_test(NAME contact_centroid_range_mixed
@@ -75,3 +87,21 @@ add_test(NAME contact_centroid_range_mixed
           -var coeff "1 1 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100 centroid_range 0.3"
           -var extra "pair_coeff 2 2 Kn 1 horizon 0.5 Rc 0.2 damping centroid 0.9 100"
   WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+
+# centroid_bounding F: the dashpot between the centres of two disks closer than b + b' + F R_c
+# (bounding radii) and farther apart than R_c node to node equals eq. 26-29 (computed in the
+# input); nothing beyond the onset, for receding disks, or with the node onset; 1 and 2 ranks
+foreach(_np 1 2)
+  foreach(_case "gap2:-var;gap;2" "gap3.5:-var;gap;3.5" "recede:-var;gap;2;-var;v;-0.1"
+                "node:-var;gap;2;-var;onset;node")
+    string(REPLACE ":" ";" _parts "${_case}")
+    list(GET _parts 0 _name)
+    list(REMOVE_AT _parts 0)
+    add_test(NAME contact_centroid_bounding_${_name}_np${_np}
+      COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex PERIDEM-CENTROID-BOUNDING
+              ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+              -in ${_in}/pair_centroid_bounding.in ${_parts} -var tag ${_name}_np${_np}
+              -var potentials ${PROJECT_SOURCE_DIR}/potentials -log none)
+    set_tests_properties(contact_centroid_bounding_${_name}_np${_np} PROPERTIES TIMEOUT 120)
+  endforeach()
+endforeach()

@@ -41,4 +41,11 @@ foreach(_np 1 2)
             -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag centroid_np${_np}
             -var damping "centroid 0.8 100"
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  # the onset of Jha et al.'s code (bounding radii): centroid_bounding travels in the restart
+  add_test(NAME restart.bed_continue_bounding_np${_np}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
+            -in ${_in}/bed_restart.in -log none -echo none
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag bounding_np${_np}
+            -var damping "centroid 0.8 100 centroid_bounding 1.01"
+    WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endforeach()

@@ -32,6 +32,19 @@ add_test(NAME restitution_lps_table2
           --out ${CMAKE_CURRENT_BINARY_DIR}/restitution_lps --grains lps --paper-tol 0.01 --check)
 set_tests_properties(restitution_lps_table2 PROPERTIES TIMEOUT 300)
 
+# the onset of Jha et al.'s code two ways: centroid_bounding 1.01 (centres closer than the
+# bounding radii + 1.01 R_c, found from the grain centres) and centroid_range 1.01 R_c (node
+# pairs from the neighbour list) switch the dashpot on at the same step for these lattice
+# disks (a node of each on the line of centres at the bounding radius): the same bounce,
+# thermo output equal (1 and 2 ranks)
+add_test(NAME restitution_bounding_equals_range
+  COMMAND ${PERIDEM_RUN}/run_variants.sh $<TARGET_FILE:lmp_peridem>
+          ${PROJECT_SOURCE_DIR}/examples/restitution in.restitution
+          ${CMAKE_CURRENT_BINARY_DIR}/restitution_bounding
+          "-var eps_n 0.9 -var potentials ${PROJECT_SOURCE_DIR}/potentials"
+          "1 -var onset 1.01" "1 -var bounding 1.01" "2 -var bounding 1.01")
+set_tests_properties(restitution_bounding_equals_range PROPERTIES TIMEOUT 300)
+
 # a restart in the middle of the contact continues the bounce and the
 # dissipated energy exactly (1 and 2 ranks)
 foreach(_np 1 2)
