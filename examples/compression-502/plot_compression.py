@@ -10,13 +10,15 @@
 """Figures and the table of README.md from a full run of in.compression.
 
     plot_compression.py [--dir RUN] [--tag c502] [--W 68.5e-3] [--dt 1e-7]
-                        [--out .] [--grains GRAINS.txt ...]
+                        [--out .] [--match time|penetration] [--dump 20000]
 
 Reads RUN/TAG_compress_load.*.txt (fix avg of in.compression: one file per leg,
 averages over 5000 steps) and the node dumps RUN/TAG_nodes.STEP.dump, and writes
   compression_force.png   force per unit area on the top wall against its
                           penetration, beside Jha et al.'s (2021) Fig. 23a;
   compression_damage.png  nodes coloured by damage at the paper's four times;
+(--match penetration: at the paper's penetrations at those times instead, for a run whose
+wall started elsewhere, e.g. -var top_gap; the node dump nearest to each, every --dump steps)
 and prints the table of README.md (penetration, force, bulk damage, damaged grains
 at the four times) and, for each TAG_state.STEP.dump / TAG_contacts.STEP.dump pair
 that in.fragments wrote from a restart file, the contact load (sum of |f| over a
@@ -95,6 +97,8 @@ def main():
     p.add_argument("--W", type=float, default=68.5e-3)
     p.add_argument("--dt", type=float, default=1e-7)
     p.add_argument("--out", default=".")
+    p.add_argument("--match", choices=("time", "penetration"), default="time")
+    p.add_argument("--dump", type=int, default=20000)
     a = p.parse_args()
     import matplotlib
     matplotlib.use("Agg")
@@ -115,11 +119,18 @@ def main():
     ax.plot(PAPER_TIMES[:, 0], PAPER_TIMES[:, 1], "ko", mfc="none")
     rows = []
     for i, ti in enumerate(TIMES):
-        k = int(np.argmin(abs(t - ti)))
+        if a.match == "time":
+            k = int(np.argmin(abs(t - ti)))
+            si = int(round(ti / a.dt))
+        else:  # the paper's penetration at t_i, and the node dump nearest to it
+            k = int(np.argmin(abs(pen - PAPER_TIMES[i][0]) + 1e9 * (np.arange(len(pen)) < k_on)))
+            si = int(round(step[k] / a.dump)) * a.dump
+            k = int(np.argmin(abs(step - si)))
+            ti = si * a.dt
         ax.plot(pen[k], stress[k] / 1e3, "o", color="C3")
         ax.annotate(f"t{i + 1}", (pen[k], stress[k] / 1e3), textcoords="offset points",
                     xytext=(-14, 4))
-        rows.append((ti, pen[k], stress[k], bulk[k], int(round(ti / a.dt))))
+        rows.append((ti, pen[k], stress[k], bulk[k], si))
     ax.set_xlim(left=-0.2)
     ax.set_xlabel("wall penetration (mm)" if onset else
                   f"wall displacement from its start at {y_on * 1e3:.2f} mm (no onset)")
@@ -138,8 +149,8 @@ def main():
         path = os.path.join(a.dir, f"{a.tag}_nodes.{si}.dump")
         ax = axes.flat[i]
         if not os.path.exists(path):
-            ax.set_title(f"t{i + 1} = {ti} s: no dump")
-            print(f"| t{i + 1} = {ti} s | {pk:.2f} | {sk / 1e3:.1f} | {PAPER_TIMES[i][0]}, "
+            ax.set_title(f"t{i + 1} = {ti:.4g} s: no dump")
+            print(f"| t{i + 1} = {ti:.4g} s | {pk:.2f} | {sk / 1e3:.1f} | {PAPER_TIMES[i][0]}, "
                   f"{PAPER_TIMES[i][1]:.0f} | {bk:.4f} | (no dump) | |")
             continue
         snap = read_dump(path)[0]
@@ -150,10 +161,10 @@ def main():
         gany = np.array([dmg[mol == g].max() > 0 for g in grains])
         ax.scatter(x * 1e3, y * 1e3, c=dmg, cmap="jet", vmin=0, vmax=1, s=0.15, lw=0)
         ax.set_aspect("equal")
-        ax.set_title(f"t{i + 1} = {ti} s, penetration {pk:.2f} mm", fontsize=9)
+        ax.set_title(f"t{i + 1} = {ti:.4g} s, penetration {pk:.2f} mm", fontsize=9)
         ax.set_xticks([])
         ax.set_yticks([])
-        print(f"| t{i + 1} = {ti} s | {pk:.2f} | {sk / 1e3:.1f} | {PAPER_TIMES[i][0]}, "
+        print(f"| t{i + 1} = {ti:.4g} s | {pk:.2f} | {sk / 1e3:.1f} | {PAPER_TIMES[i][0]}, "
               f"{PAPER_TIMES[i][1]:.0f} | {bk:.4f} | {int(gany.sum())} of {len(grains)} | "
               f"{int((gmean > 0.1).sum())} |")
     fig.tight_layout()
