@@ -159,7 +159,7 @@ def main():
         grains = np.unique(mol)
         gmean = np.array([dmg[mol == g].mean() for g in grains])
         gany = np.array([dmg[mol == g].max() > 0 for g in grains])
-        ax.scatter(x * 1e3, y * 1e3, c=dmg, cmap="jet", vmin=0, vmax=1, s=0.15, lw=0)
+        ax.scatter(x * 1e3, y * 1e3, c=dmg, cmap="jet", vmin=0, vmax=0.5, s=0.8, lw=0)
         ax.set_aspect("equal")
         ax.set_title(f"t{i + 1} = {ti:.4g} s, penetration {pk:.2f} mm", fontsize=9)
         ax.set_xticks([])
