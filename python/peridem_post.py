@@ -103,6 +103,37 @@ def read_ave_time(path):
     return data[:, 0], data[:, 1:]
 
 
+def read_thermo(path, first=("Step", "Time")):
+    """The thermo output of a LAMMPS log: one dict per time step (column name -> value),
+    each step once (a run's first line repeats the previous run's last). The header is the
+    line starting with the words *first*; lines of another length or not numeric are skipped
+    (echoed commands, warnings)."""
+    rows, names, seen = [], None, set()
+    for line in open(path):
+        w = line.split()
+        if tuple(w[:len(first)]) == tuple(first):
+            names = w
+            continue
+        if names and len(w) == len(names) and w[0].isdigit():
+            try:
+                r = dict(zip(names, (float(v) for v in w)))
+            except ValueError:
+                continue
+            if r[names[0]] not in seen:
+                seen.add(r[names[0]])
+                rows.append(r)
+    return rows
+
+
+def verdict(fails, passed=""):
+    """Print PERIDEM-FAIL with the failures, or PERIDEM-PASS; the exit code of a check."""
+    if fails:
+        print("PERIDEM-FAIL " + "; ".join(fails))
+        return 1
+    print("PERIDEM-PASS" + (" " + passed if passed else ""))
+    return 0
+
+
 # ------------------------------------------------------------------ crack
 
 

@@ -419,7 +419,7 @@ void FixPeridemWall::warn_tight_box(double Rc) const
     if (!walls[w].active || domain->boundary[dim][side] != 1) continue;
     const double room =
         side == 0 ? walls[w].pos - domain->boxlo[dim] : domain->boxhi[dim] - walls[w].pos;
-    if (room < Rc)
+    if (room < Rc * (1.0 - 1e-9)) // a face exactly Rc outside is safe (round-off)
       tight +=
           fmt::format("{}{} ({:.3g} inside the face)", tight.empty() ? "" : ", ", FACES[w], room);
   }

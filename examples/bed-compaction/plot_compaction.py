@@ -11,34 +11,22 @@ the volume fraction phi (Bhattacharya & Lipton 2023, Fig. 14), and the nodes
 of one dump coloured by Z (compute peridem/damage column 2: the largest
 |s|/s0 of a node's bonds, 1 or more where a bond broke).
 usage: python3 plot_compaction.py log.lammps out.png nodes.N.dump"""
+import os
 import sys
 
 import matplotlib
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from peridem_post import read_thermo  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 # thermo columns by name (in.compaction: Step Time v_lid c_bed ... c_dmg f_box[21] ...)
-rows, names = [], None
-for line in open(sys.argv[1]):
-    w = line.split()
-    if w[:2] == ["Step", "Time"]:
-        names = w
-        continue
-    if names and len(w) == len(names) and w[0].isdigit():
-        try:
-            rows.append([float(v) for v in w])
-        except ValueError:
-            pass
-seen, curve = set(), []
-for r in rows:  # each chunk's first line repeats the previous chunk's last
-    if r[0] not in seen:
-        seen.add(r[0])
-        curve.append(r)
-iphi, idmg, iload = names.index("c_bed"), names.index("c_dmg"), names.index("f_box[21]")
-phi = [r[iphi] for r in curve]
-load = [r[iload] for r in curve]
-damage = [r[idmg] for r in curve]
+curve = read_thermo(sys.argv[1])
+phi = [r["c_bed"] for r in curve]
+load = [r["f_box[21]"] for r in curve]
+damage = [r["c_dmg"] for r in curve]
 
 lines = open(sys.argv[3]).read().split("\n")
 head = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
