@@ -199,6 +199,20 @@ peridem::EnclosingCircle security_disk(const peridem::Ring &ring)
   return peridem::smallest_enclosing_circle(pts);
 }
 
+// the radius parameter of a built-in 2d shape (given, else the shape table's default); 0 for
+// shapes without one
+double nominal_radius(const std::string &shape, const std::map<std::string, double> &params)
+{
+  for (const auto &info : peridem::builtin_shapes())
+    if (info.name == shape)
+      for (const auto &par : info.parameters)
+        if (par.name == "radius") {
+          const auto given = params.find("radius");
+          return given != params.end() ? given->second : par.default_value;
+        }
+  return 0.0;
+}
+
 } // namespace
 
 /* parsed arguments of one create_peridem_grains command */
@@ -218,6 +232,10 @@ struct CreatePeridemGrains::Options {
   std::vector<std::string> labels_of_lines;
   std::vector<double> bed; // "# bed xlo xhi ylo yhi zlo zhi" of the positions file
   double fit_radius = 0.0; // > 0: scale the shape to this security-disk radius
+  // fit radius: the shape's radius parameter becomes the security disk's radius, the shape
+  // centred on the disk (the authors' perigrain scales its shapes so); else the smallest
+  // enclosing circle is the disk (fit enclosing, the text's "diameters match")
+  bool fit_by_radius = false, fit_given = false;
   bool rotate_given = false;
   // perturbed_disk: each grain its own outline (seed S + k for the k-th position: Bhattacharya
   // & Lipton 2023, §7.2 draw one per grain) or all the outline of seed S (outlines same)
@@ -370,6 +388,11 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       o.outlines_each =
           peridem_lmp::choice(lmp, CMD, "outlines", arg[iarg++], {"each", "same"}) == 0;
       o.outlines_given = true;
+    } else if (key == "fit") {
+      need(1, "fit");
+      o.fit_by_radius =
+          peridem_lmp::choice(lmp, CMD, "fit", arg[iarg++], {"enclosing", "radius"}) == 1;
+      o.fit_given = true;
     } else if (key == "label") {
       need(1, "label");
       o.label = arg[iarg++];
@@ -496,6 +519,14 @@ void CreatePeridemGrains::check(const Options &o)
   if (o.at.empty()) error->all(FLERR, "{}: no grain position given (use at x y z)", CMD);
   if (o.outlines_given && o.shape != "perturbed_disk")
     error->all(FLERR, "{}: outlines applies to perturbed_disk grains, not {}", CMD, o.shape);
+  if (o.fit_by_radius && (nominal_radius(o.shape, o.params) <= 0.0 || o.extrude > 0.0))
+    error->all(FLERR,
+               "{}: fit radius needs a built-in 2d shape with a radius parameter (disk, polygon, "
+               "hexagon, plus, ring, perturbed_disk), not {}{}",
+               CMD, o.shape, o.extrude > 0.0 ? " extruded" : "");
+  if (o.fit_given && o.at_radius.empty())
+    error->all(FLERR,
+               "{}: fit applies to grains placed from a bed file (positions FILE with radii)", CMD);
   if (o.axis_given && o.rotate_seed > 0)
     error->all(FLERR, "{}: axis applies to a fixed rotate angle, not to rotate random", CMD);
   if (o.axis_given && domain->dimension == 2 && (o.axis[0] != 0.0 || o.axis[1] != 0.0))
@@ -608,7 +639,9 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
     }
     shape.scale(o.scale);
     double extrude = o.extrude;
-    if (o.fit_radius > 0.0) { // security disk (sphere of an extrusion), diameter matched
+    if (o.fit_radius > 0.0 && o.fit_by_radius) { // radius parameter = security-disk radius
+      shape.scale(o.fit_radius / (o.scale * nominal_radius(o.shape, o.params)));
+    } else if (o.fit_radius > 0.0) { // security disk (sphere of an extrusion), diameter matched
       const peridem::EnclosingCircle e = security_disk(shape.outer());
       shape.translate(peridem::Vec2(-e.x, -e.y));
       const double s = o.fit_radius / std::sqrt(e.r * e.r + 0.25 * extrude * extrude);

@@ -83,13 +83,15 @@ def main():
     xkey, xlabel = ("Time", "time (ms)") if a.time else ("c_bed", "volume fraction phi")
     scale = 1e3 if a.time else 1.0
     shape_colours = {"perturbed_disk": "C0", "square": "C1", "plus": "C2", "ring": "C3"}
+    named = [next((s for s in shape_colours if s in label), None) for label, _ in runs]
+    by_shape = len(set(named)) == len(named) or None not in named and len(set(named)) > 1
     for k, (label, rows) in enumerate(runs):
         x = [r[xkey] * scale for r in rows]
         # one colour per shape named in the label, dashed for the authors' bond constants
         colour = next((c for s, c in shape_colours.items() if s in label), f"C{4 + k % 6}")
         style = dict(color=colour, linestyle="--" if label.startswith("authors") else "-")
-        if not any(s in label for s in shape_colours):
-            style = {}
+        if not by_shape:  # a series of one shape (e.g. rings of several thinnesses)
+            style = {"color": f"C{k % 10}"}
         ax1.plot(x, [r["c_dmg"] for r in rows], label=label, **style)
         ax2.plot(x, [r["f_box[21]"] for r in rows], label=label, **style)
     ax1.set_xlabel(xlabel)

@@ -25,6 +25,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -241,6 +242,54 @@ TEST_F(CreatePeridemBed, MeshGrainsFillTheirSecurityDisks)
   }
   ASSERT_EQ(reach.size(), bed.size());
   for (const auto &kv : reach) EXPECT_NEAR(kv.second, bed[kv.first - 1].r, 1e-12);
+}
+
+TEST_F(CreatePeridemBed, FitRadiusPutsTheShapesRadiusOnTheSecurityDisk)
+{
+  // fit radius (the authors' perigrain scaling): a perturbed disk's radius parameter R is the
+  // security disk's radius r and the outline is centred on the disk; its vertices lie at
+  // R (1 - X_i) <= R, so every node is within r of the bed point, and no grain is larger than
+  // the same outline scaled by its smallest enclosing circle (fit enclosing, the default,
+  // which scales by r / max_i r_i >= 1). A ring's radius is its enclosing circle's: both fits
+  // place the same nodes.
+  const std::string dir = scratch();
+  command(bed_setup(dir, "grain 1"));
+  const auto bed = read_bed(dir + "bed.txt");
+  Atom *atom = lmp->atom;
+  auto grains = [&](const std::string &shape, const std::string &fit) {
+    command("delete_atoms group all");
+    command("create_peridem_grains 1 " + shape + " spacing 0.1 horizon 0.3 density 1 label grain " +
+            fit + " positions " + dir + "bed.txt");
+    std::map<tagint, int> nodes;
+    std::map<tagint, double> reach;
+    std::map<tagint, std::vector<double>> xy;
+    for (int i = 0; i < atom->nlocal; i++) {
+      const Line &b = bed[atom->molecule[i] - 1];
+      const double d = std::hypot(atom->x[i][0] - b.x, atom->x[i][1] - b.y);
+      nodes[atom->molecule[i]]++;
+      reach[atom->molecule[i]] = std::max(reach[atom->molecule[i]], d);
+      xy[atom->tag[i]] = {atom->x[i][0], atom->x[i][1]};
+    }
+    return std::make_tuple(nodes, reach, xy);
+  };
+  const auto [n_radius, reach_radius, xy_radius] = grains("perturbed_disk", "fit radius");
+  const auto [n_enclosing, reach_enclosing, xy_enclosing] = grains("perturbed_disk", "");
+  ASSERT_EQ(n_radius.size(), bed.size());
+  int smaller = 0;
+  for (const auto &kv : n_radius) {
+    const double r = bed[kv.first - 1].r;
+    EXPECT_LE(reach_radius.at(kv.first), r * (1 + 1e-12)) << "grain " << kv.first;
+    EXPECT_LE(kv.second, n_enclosing.at(kv.first)) << "grain " << kv.first;
+    if (kv.second < n_enclosing.at(kv.first)) smaller++;
+  }
+  EXPECT_GT(smaller, static_cast<int>(bed.size()) / 2); // most outlines stay inside R
+  const auto ring_radius = std::get<2>(grains("ring", "fit radius"));
+  const auto ring_enclosing = std::get<2>(grains("ring", "fit enclosing"));
+  ASSERT_EQ(ring_radius.size(), ring_enclosing.size());
+  for (const auto &kv : ring_radius) {
+    EXPECT_NEAR(kv.second[0], ring_enclosing.at(kv.first)[0], 1e-12);
+    EXPECT_NEAR(kv.second[1], ring_enclosing.at(kv.first)[1], 1e-12);
+  }
 }
 
 TEST_F(CreatePeridemBed, SpheresAndBoxesIn3d)

@@ -87,3 +87,10 @@ endforeach()
 peridem_add_error_test(grains_outlines_not_perturbed ${_g}/grain_box.in
   "create_peridem_grains: outlines applies to perturbed_disk grains, not disk"
   -var grain "disk radius 1 ${_ok} outlines same")
+# fit (enclosing | radius) sizes grains placed from a bed file; radius needs a radius parameter
+peridem_add_error_test(grains_fit_without_bed ${_g}/grain_box.in
+  "create_peridem_grains: fit applies to grains placed from a bed file \\(positions FILE with radii\\)"
+  -var grain "disk radius 1 ${_ok} fit radius")
+peridem_add_error_test(grains_fit_radius_square ${_g}/grain_box.in
+  "create_peridem_grains: fit radius needs a built-in 2d shape with a radius parameter \\(disk, polygon, hexagon, plus, ring, perturbed_disk\\), not square"
+  -var grain "square ${_ok} fit radius")
