@@ -48,16 +48,27 @@ std::vector<double> grain_reduce(LAMMPS *lmp, int groupbit, tagint maxmol, int n
 
 std::vector<double> gather_all(LAMMPS *lmp, const std::vector<double> &mine)
 {
-  int nprocs = 1;
-  MPI_Comm_size(lmp->world, &nprocs);
-  int count = int(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, lmp->world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  std::vector<double> all(size_t(displs[nprocs - 1]) + counts[nprocs - 1]);
+  const int count = int(mine.size());
+  std::vector<int> counts, displs;
+  std::vector<double> all(size_t(gather_counts(lmp->world, count, counts, displs)));
   MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
                  MPI_DOUBLE, lmp->world);
   return all;
+}
+
+int gather_counts(MPI_Comm world, int n, std::vector<int> &counts, std::vector<int> &displs)
+{
+  int nprocs = 1;
+  MPI_Comm_size(world, &nprocs);
+  counts.resize(nprocs);
+  displs.resize(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  return total;
 }
 
 } // namespace peridem_lmp

@@ -45,6 +45,10 @@ std::vector<double> grain_reduce(LAMMPS_NS::LAMMPS *lmp, int groupbit, LAMMPS_NS
 // every rank.
 std::vector<double> gather_all(LAMMPS_NS::LAMMPS *lmp, const std::vector<double> &mine);
 
+// Counts and displacements of an MPI_Allgatherv of n items from each rank (resized to the
+// number of ranks); returns the total.
+int gather_counts(MPI_Comm world, int n, std::vector<int> &counts, std::vector<int> &displs);
+
 } // namespace peridem_lmp
 
 #endif

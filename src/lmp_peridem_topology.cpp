@@ -12,6 +12,7 @@
 ------------------------------------------------------------------------- */
 
 #include "lmp_peridem_topology.h"
+#include "lmp_peridem_grains.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -57,17 +58,13 @@ bigint delete_nodes(LAMMPS *lmp, std::vector<int> doomed,
 {
   Atom *atom = lmp->atom;
   MPI_Comm world = lmp->world;
-  int nprocs = 1;
-  MPI_Comm_size(world, &nprocs);
 
   // every rank needs the IDs of all deleted atoms: partners may be anywhere
   std::vector<tagint> mine;
   for (int i : doomed) mine.push_back(atom->tag[i]);
   const int nmine = static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int p = 1; p < nprocs; p++) displs[p] = displs[p - 1] + counts[p - 1];
-  const int ngone = displs[nprocs - 1] + counts[nprocs - 1];
+  std::vector<int> counts, displs;
+  const int ngone = peridem_lmp::gather_counts(world, nmine, counts, displs);
   if (ngone == 0) return 0;
   std::vector<tagint> gone(ngone);
   MPI_Allgatherv(mine.data(), nmine, MPI_LMP_TAGINT, gone.data(), counts.data(), displs.data(),

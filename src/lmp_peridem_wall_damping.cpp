@@ -8,6 +8,7 @@
 ------------------------------------------------------------------------- */
 
 #include "lmp_peridem_wall_damping.h"
+#include "lmp_peridem_grains.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -40,7 +41,6 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
                                   const std::function<void(int, int, const double *)> &on_force)
 {
   MPI_Comm world = lmp->world;
-  const int nprocs = lmp->comm->nprocs;
 
   // all (grain, wall) touches of all ranks, one entry each (the smallest type of the grain's
   // touching nodes), sorted: every rank applies the same forces in the same order
@@ -50,14 +50,7 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
   std::sort(touch_local.begin(), touch_local.end());
   touch_local.erase(std::unique(touch_local.begin(), touch_local.end(), same), touch_local.end());
   const int mine = 3 * (int)touch_local.size();
-  counts.resize(nprocs);
-  displs.resize(nprocs);
-  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
+  const int total = peridem_lmp::gather_counts(world, mine, counts, displs);
   if (total == 0) return 0.0;
   touch_all.resize(total / 3);
   MPI_Allgatherv(touch_local.empty() ? nullptr : touch_local[0].data(), mine, MPI_LMP_TAGINT,

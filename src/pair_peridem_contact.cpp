@@ -32,6 +32,7 @@
 #include "domain.h"
 #include "lmp_peridem_restart.h"
 #include "lmp_peridem_bond_loop.h"
+#include "lmp_peridem_grains.h"
 #include "lmp_peridem_image.h"
 #include "error.h"
 #include "fix.h"
@@ -441,16 +442,7 @@ void PairPeridemContact::compute_bounding_radii()
 
 int PairPeridemContact::gather_counts(int n)
 {
-  const int nprocs = comm->nprocs;
-  counts.resize(nprocs);
-  displs.resize(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  return total;
+  return peridem_lmp::gather_counts(world, n, counts, displs);
 }
 
 /* ----------------------------------------------------------------------
