@@ -10,10 +10,12 @@
 """Table 3 of Bhattacharya & Lipton (2023) from in.shapes runs: reads the logs of the four
 shapes (PERIDEM-SETUP: initial fraction; PERIDEM-SETTLED: settled fraction), prints the table
 beside the paper's and, with --check, asserts what holds at the reduced scale of the ctest
-(bed_shapes_settle_*: 60 grains in a 10 mm container, h = eps/4) as at full scale (README.md):
+(bed_shapes_settle_*: 60 grains in a 10 mm container, h = eps/5 = R_c) as at full scale
+(README.md):
 
   1. every bed settled (PERIDEM-SETTLED) and gravity compacted it: settled > initial fraction;
-  2. the plus shapes settle loosest (Table 3: 0.59, the lowest);
+  2. the plus shapes settle loosest in Table 3's measure, rings counted with their holes
+     (Table 3: 0.59, the lowest; the rings' material alone fills less);
   3. the compaction by gravity, settled over initial fraction, orders as Table 3's
      (0.59/0.28 = 2.1, 0.64/0.37 = 1.73, 0.75/0.55 = 1.36, 0.92/0.86 = 1.07):
      plus > square > perturbed disk > ring;
@@ -88,9 +90,10 @@ def main():
             fails.append(f"{s}: settled phi {r['phi']:.4f} not above initial {r['phi0']:.4f}")
     if fails:
         return verdict(fails)
-    loosest = min(SHAPES, key=lambda s: res[s]["phi"])
+    # Table 3's measure: a ring counted with its hole (its material alone is looser than a plus)
+    loosest = min(SHAPES, key=lambda s: res[s]["phi_holes"])
     if loosest != "plus":
-        fails.append(f"loosest settled bed is {loosest}, not plus")
+        fails.append(f"loosest settled bed (holes counted, as Table 3) is {loosest}, not plus")
     gain = {s: res[s]["phi"] / res[s]["phi0"] for s in SHAPES}
     order = ["plus", "square", "perturbed_disk", "ring"]
     for hi, lo in zip(order, order[1:]):

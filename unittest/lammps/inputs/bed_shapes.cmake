@@ -7,10 +7,11 @@
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
 # examples/bed-settling/in.shapes (Bhattacharya & Lipton 2023, §7.2-7.3, Table 3), reduced:
-# the four shapes of §7.2 from one bed of 60 security disks in a 10 mm container, h = eps/4,
+# the four shapes of §7.2 from one bed of 60 security disks in a 10 mm container, h = eps/5 = R_c,
 # the text's material, contact and 70 ns step, settle under g = 5000 m/s^2 until at rest
 # (kinetic energy below 1 % of its peak and every grain slower than 0.05 m/s); then
-# check_shapes.py: every bed settled and compacted, the plus bed is the loosest, the
+# check_shapes.py: every bed settled and compacted, the plus bed is the loosest (rings counted
+# with their holes, as Table 3), the
 # compaction by gravity orders plus > square > perturbed disk > ring as in Table 3, and the
 # ring bed's with-holes fraction is its material fraction over 1 - tau^2 (README.md)
 set(_dir ${CMAKE_CURRENT_BINARY_DIR}/bed_shapes)
@@ -21,7 +22,7 @@ foreach(_shape perturbed_disk square plus ring)
             $<TARGET_FILE:lmp_peridem>
             -in ${PROJECT_SOURCE_DIR}/examples/bed-settling/in.shapes -log ${_dir}/log.${_shape}
             -echo none -var potentials ${PROJECT_SOURCE_DIR}/potentials -var shape ${_shape}
-            -var count 60 -var W 10e-3 -var res 4 -var maxsteps 200000
+            -var count 60 -var W 10e-3 -var res 5 -var maxsteps 200000
     WORKING_DIRECTORY ${_dir})
   set_tests_properties(bed_shapes_settle_${_shape} PROPERTIES TIMEOUT 600
     FIXTURES_SETUP bed_shapes)
