@@ -8,7 +8,7 @@
 # SPDX-License-Identifier: GPL-2.0-only
 # ----------------------------------------------------------------------
 """Checks of the reduced compaction of plus and square beds (ctest bed_shapes_compaction_*:
-in.compaction, 40 grains in an 8 mm container, h = eps/4, the authors' bond constants), the
+in.compaction, 40 grains in an 8 mm container, h = eps/5 = R_c, the authors' bond constants), the
 physics Bhattacharya & Lipton (2023, §7.4.1, Fig. 14) report that holds at this scale
 (README.md):
 
@@ -50,7 +50,8 @@ def main():
         phi_mid = 0.5 * (rows[0]["c_bed"] + rows[k]["c_bed"])
         mid = next(r for r in rows if r["c_bed"] >= phi_mid)
         load_onset, load_mid = rows[k - 1]["f_box[21]"], mid["f_box[21]"]
-        print(f"{name}: first broken bond at phi {onset_phi[name]:.4f} (step {int(rows[k]['Step'])}); "
+        print(f"{name}: first broken bond at phi {onset_phi[name]:.4f} "
+              f"(step {int(rows[k]['Step'])}); "
               f"top wall load {load_onset:.4g} N/m just before, {load_mid:.4g} N/m at phi "
               f"{mid['c_bed']:.4f}; end: phi {rows[-1]['c_bed']:.4f}, bulk damage "
               f"{rows[-1]['c_dmg']:.4g}, {int(rows[-1]['c_dmg[2]'])} broken bonds")

@@ -57,7 +57,8 @@ def hole_fill(folder, gamma):
     """rows (step, phi, bulk damage, filled fraction of the rings' hole area)"""
     radii = [float(l.split()[3]) for l in open(os.path.join(folder, "bed.txt"))
              if l.strip() and not l.startswith("#")]
-    h = float(re.findall(r"h = ([0-9.eE+-]+) m", open(os.path.join(folder, "log.lammps")).read())[0])
+    log = open(os.path.join(folder, "log.lammps")).read()
+    h = float(re.findall(r"h = ([0-9.eE+-]+) m", log)[0])
     rows = {int(r["Step"]): r for r in read_thermo(os.path.join(folder, "log.lammps"))}
     out = []
     for f in dumps_of(folder):

@@ -33,9 +33,9 @@ add_test(NAME bed_shapes_table3_order
 set_tests_properties(bed_shapes_table3_order PROPERTIES FIXTURES_REQUIRED bed_shapes)
 
 # examples/bed-compaction/in.compaction (Bhattacharya & Lipton 2023, §7.4.1, Fig. 14), reduced:
-# plus and square beds of 40 grains in an 8 mm container, h = eps/4, the authors' bond constants
-# (-var material authors), the text's contact and 70 ns step, pressed by the top wall at 1 m/s
-# to phi 0.95; then check_shapes.py: damage starts in the plus bed before the square bed, the
+# plus and square beds of 40 grains in an 8 mm container, h = eps/5 = R_c, the authors' bond
+# constants (-var material authors), the text's contact and 70 ns step, pressed by the top wall
+# at 1 m/s to phi 0.95; then check_shapes.py: damage starts in the plus bed before the square bed, the
 # wall load rises before the first break, damage never decreases and grows (README.md)
 foreach(_shape plus square)
   add_test(NAME bed_shapes_compaction_${_shape}
@@ -43,7 +43,7 @@ foreach(_shape plus square)
             $<TARGET_FILE:lmp_peridem>
             -in ${PROJECT_SOURCE_DIR}/examples/bed-compaction/in.compaction
             -log ${_dir}/compaction.${_shape} -echo none
-            -var potentials ${PROJECT_SOURCE_DIR}/potentials -var shape ${_shape} -var res 4
+            -var potentials ${PROJECT_SOURCE_DIR}/potentials -var shape ${_shape} -var res 5
             -var count 40 -var W 8e-3 -var material authors -var stop_damage 0.99
             -var stop_phi 0.95 -var maxsteps 200000
     WORKING_DIRECTORY ${_dir}/compaction_${_shape})
