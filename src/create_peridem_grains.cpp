@@ -199,15 +199,16 @@ peridem::EnclosingCircle security_disk(const peridem::Ring &ring)
   return peridem::smallest_enclosing_circle(pts);
 }
 
-// the radius parameter of a built-in 2d shape (given, else the shape table's default); 0 for
-// shapes without one
-double nominal_radius(const std::string &shape, const std::map<std::string, double> &params)
+// a parameter of a built-in 2d shape: the value given, else the shape table's default; 0 for
+// shapes without it
+double shape_parameter(const std::string &shape, const std::map<std::string, double> &params,
+                       const std::string &name)
 {
   for (const auto &info : peridem::builtin_shapes())
     if (info.name == shape)
       for (const auto &par : info.parameters)
-        if (par.name == "radius") {
-          const auto given = params.find("radius");
+        if (par.name == name) {
+          const auto given = params.find(name);
           return given != params.end() ? given->second : par.default_value;
         }
   return 0.0;
@@ -290,18 +291,8 @@ void CreatePeridemGrains::command(int narg, char **arg)
   // one discretization per security-disk radius (bed files), and per grain where each grain
   // has its own outline
   const bool each = opt.shape == "perturbed_disk" && opt.outlines_each;
-  double seed0 = 0.0; // the seed given, else the shape table's default
-  if (each) {
-    const auto given = opt.params.find("seed");
-    if (given != opt.params.end()) {
-      seed0 = given->second;
-    } else {
-      for (const auto &shape : peridem::builtin_shapes())
-        if (shape.name == opt.shape)
-          for (const auto &par : shape.parameters)
-            if (par.name == "seed") seed0 = par.default_value;
-    }
-  }
+  // the seed given, else the shape table's default
+  const double seed0 = each ? shape_parameter(opt.shape, opt.params, "seed") : 0.0;
   std::map<std::pair<double, std::size_t>, Grain> built;
   for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
     const double r = opt.at_radius.empty() ? 0.0 : opt.at_radius[ig];
@@ -519,7 +510,7 @@ void CreatePeridemGrains::check(const Options &o)
   if (o.at.empty()) error->all(FLERR, "{}: no grain position given (use at x y z)", CMD);
   if (o.outlines_given && o.shape != "perturbed_disk")
     error->all(FLERR, "{}: outlines applies to perturbed_disk grains, not {}", CMD, o.shape);
-  if (o.fit_by_radius && (nominal_radius(o.shape, o.params) <= 0.0 || o.extrude > 0.0))
+  if (o.fit_by_radius && (shape_parameter(o.shape, o.params, "radius") <= 0.0 || o.extrude > 0.0))
     error->all(FLERR,
                "{}: fit radius needs a built-in 2d shape with a radius parameter (disk, polygon, "
                "hexagon, plus, ring, perturbed_disk), not {}{}",
@@ -640,7 +631,7 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
     shape.scale(o.scale);
     double extrude = o.extrude;
     if (o.fit_radius > 0.0 && o.fit_by_radius) { // radius parameter = security-disk radius
-      shape.scale(o.fit_radius / (o.scale * nominal_radius(o.shape, o.params)));
+      shape.scale(o.fit_radius / (o.scale * shape_parameter(o.shape, o.params, "radius")));
     } else if (o.fit_radius > 0.0) { // security disk (sphere of an extrusion), diameter matched
       const peridem::EnclosingCircle e = security_disk(shape.outer());
       shape.translate(peridem::Vec2(-e.x, -e.y));
