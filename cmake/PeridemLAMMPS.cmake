@@ -69,9 +69,11 @@ add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver
 # the chunked bond loop of bond_peridem.cpp vectorises its square roots only
 # without errno (they take sums of squares, never negative); no FMA contraction,
 # so that its AVX-512 clone (which has FMA) gives the one-by-one loop's bits; the same for
+# bond_peridem_base.cpp (the break path and reference lengths the loops share) and
 # bond_peridem_lps.cpp, whose fast force pass must give its one-by-one pass's bits on any
 # target (-march=native has FMA)
-set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem.cpp PROPERTIES
+set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem.cpp
+  ${PROJECT_SOURCE_DIR}/src/bond_peridem_base.cpp PROPERTIES
   COMPILE_OPTIONS "-fno-math-errno;-ffp-contract=off")
 set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem_lps.cpp PROPERTIES
   COMPILE_OPTIONS "-ffp-contract=off")

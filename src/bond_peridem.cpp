@@ -15,30 +15,23 @@
 ------------------------------------------------------------------------- */
 
 #include "bond_peridem.h"
-#include "lmp_peridem_citations.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
-#include "lmp_peridem_restart.h"
-#include "lmp_peridem_bond_loop.h"
-#include "lmp_peridem_image.h"
 #include "error.h"
-#include "fix_peridem_bonds.h"
 #include "force.h"
-#include "lattice.h"
 #include "memory.h"
-#include "modify.h"
 #include "neighbor.h"
-#include "update.h"
 
+#include "lmp_peridem_bond_loop.h"
+#include "lmp_peridem_citations.h"
 #include "lmp_peridem_material.h"
-#include "lmp_peridem_parse.h"
+#include "lmp_peridem_restart.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 
@@ -49,50 +42,25 @@ const char *const COEFF = "bond_coeff";
 
 /* ---------------------------------------------------------------------- */
 
-BondPeridem::BondPeridem(LAMMPS *lmp)
-    : Bond(lmp), c(nullptr), s0(nullptr), horizon(nullptr), spacing(nullptr), conic(nullptr),
-      breakable(nullptr), breakage(peridem::BreakageMode::Tension), break_flag(1),
-      break_after_force(0), volume_correction(0), cohesive(0), validate_next(1), bonds_fix(nullptr),
-      cache_ncalls(-1), cache_generation(-1), cache_bondlist(nullptr)
+BondPeridem::BondPeridem(LAMMPS *lmp) : BondPeridemBase(lmp), c(nullptr), conic(nullptr)
 {
   peridem_lmp::cite_grain_shape(lmp);
-  writedata = 1;
 }
 
 BondPeridem::~BondPeridem()
 {
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(c);
-    memory->destroy(s0);
-    memory->destroy(horizon);
-    memory->destroy(spacing);
-    memory->destroy(conic);
-    memory->destroy(breakable);
-    memory->destroy(s0_break);
+  memory->destroy(c);
+  memory->destroy(conic);
+}
+
+void BondPeridem::allocate_model(int np1)
+{
+  memory->create(c, np1, "bond:c");
+  memory->create(conic, np1, "bond:conic");
+  for (int i = 0; i < np1; i++) {
+    c[i] = 0.0;
+    conic[i] = 0;
   }
-}
-
-/* ----------------------------------------------------------------------
-   reference bond length |x0_i - x0_j|; x0 of a ghost atom is its owner's,
-   not shifted by the periodic image, hence the minimum image convention
-------------------------------------------------------------------------- */
-
-double BondPeridem::reference_length(int i1, int i2) const
-{
-  return reference_length_flat(atom->x0[0], i1, i2);
-}
-
-// x0 flat from x0[0] (LAMMPS's per-atom arrays are contiguous, memory->grow), so that
-// fill_cache() reads it without a row pointer per atom
-inline double BondPeridem::reference_length_flat(const double *x0, int i1, int i2) const
-{
-  const double *a = x0 + 3 * i1, *b = x0 + 3 * i2;
-  double dx = a[0] - b[0];
-  double dy = a[1] - b[1];
-  double dz = a[2] - b[2];
-  peridem_lmp::minimum_image(domain, dx, dy, dz);
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
 /* ----------------------------------------------------------------------
@@ -102,15 +70,16 @@ inline double BondPeridem::reference_length_flat(const double *x0, int i1, int i
 
 void BondPeridem::compute(int eflag, int vflag)
 {
-  ev_init(eflag, vflag);
-  if (validate_next) validate_bonds();
-  if (bond_list_is_new(cache.size())) fill_cache();
+  begin_compute(eflag, vflag);
   if (neighbor->nbondlist == 0) return;
   // steps with energy or virial, and LAMMPS's break order, go one bond at a
   // time; the others in chunks (the same forces, to the bit)
-  if (evflag || (break_flag && break_after_force))
-    compute_one_by_one(eflag);
-  else
+  if (evflag || (break_flag && break_after_force)) {
+    if (bond_pieces.type_all > 0)
+      compute_one_by_one<true>(eflag);
+    else
+      compute_one_by_one<false>(eflag);
+  } else
     compute_chunked();
 }
 
@@ -142,17 +111,36 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
   // LAMMPS's per-atom arrays are contiguous (memory->create): index them flat, as LAMMPS's
   // OPT styles do
   const double *x = atom->x[0];
-  double *f = atom->f[0];
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
   const double *inv_r0 = cache.inv_r0.data();
   const double *kb = cache.k.data();
   const double k_all = cache.k_value;
   const PieceView pc = pieces();
 
   alignas(64) double dx[CHUNK], dy[CHUNK], dz[CHUNK], rv[CHUNK], sv[CHUNK], fb[CHUNK];
-  int current = -1;
-  double fsum[3] = {0.0, 0.0, 0.0};
+
+  // pass (c) on the base's traversal: entry n is j = n - n0 of the chunk's arrays
+  struct Forces {
+    double *f;
+    int nlocal, newton_bond;
+    const double *dx, *dy, *dz, *rv, *sv, *fb, *r0c;
+    int n0 = 0, j = 0;
+    int current = -1;
+    double fsum[3] = {0.0, 0.0, 0.0};
+    void piece(int) {}
+    void measure(int n, int, int) { j = n - n0; }
+    double stretch(int) const { return sv[j]; }
+    double r0(int n) const { return r0c[n]; }
+    void bond(int, int i1, int i2, int)
+    {
+      const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
+      if (DIM == 3)
+        peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
+                                    dy[j], dz[j], fbond);
+      else
+        peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
+                                       dy[j], fbond);
+    }
+  } out{atom->f[0], atom->nlocal, force->newton_bond, dx, dy, dz, rv, sv, fb, cache.r0.data()};
 
   for (int c = 0; c < pc.nchunks; c++) {
     const int p0 = pc.chunk[c], p1 = pc.chunk[c + 1];
@@ -182,29 +170,12 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
       sv[j] = peridem::stretch_from_inverse(r, ir[j]);
       fb[j] = -peridem::bond_force_per_length(UNIFORM_K ? k_all : kk[j], ir[j], 1.0 / r);
     }
-    // (c) forces in list order
-    for (int p = p0; p < p1; p++) {
-      const int i1 = pc.atom[p];
-      for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
-        const int i2 = pc.partner[n];
-        if (i2 == i1) continue; // broken
-        const int type = pc.type_of<ONE_TYPE>(n);
-        const int j = n - n0;
-        if (break_flag && peridem::bond_breaks(sv[j], s0_break[type], breakage)) {
-          break_bond(n, i1, i2, cache.r0[n], s0[type]);
-          continue;
-        }
-        const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
-        if (DIM == 3)
-          peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
-                                      dy[j], dz[j], fbond);
-        else
-          peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
-                                         dx[j], dy[j], fbond);
-      }
-    }
+    // (c) breakage and forces in list order
+    out.n0 = n0;
+    for_each_intact_bond<BREAK_BEFORE_FORCE, ONE_TYPE>(pc, p0, p1, out);
   }
-  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+  if (out.current >= 0)
+    peridem_lmp::add_force(out.f, out.current, out.fsum[0], out.fsum[1], out.fsum[2]);
 }
 
 // built three times, for AVX-512, AVX2 and the baseline x86-64 (SSE2), chosen when the
@@ -218,7 +189,7 @@ __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 void BondPeridem::compute_chunked()
 {
-  const bool planar = domain->dimension == 2, one_type = cache.type_all > 0;
+  const bool planar = domain->dimension == 2, one_type = bond_pieces.type_all > 0;
   if (cache.k_uniform) {
     if (one_type)
       planar ? chunked_pass<2, true, true>() : chunked_pass<3, true, true>();
@@ -236,58 +207,55 @@ void BondPeridem::compute_chunked()
    one bond at a time, with energy and virial and either break order
 ------------------------------------------------------------------------- */
 
-void BondPeridem::compute_one_by_one(int eflag)
+template <bool ONE_TYPE> void BondPeridem::compute_one_by_one(int eflag)
 {
-  int **bondlist = neighbor->bondlist;
-  const int nbondlist = neighbor->nbondlist;
-  const double *x = atom->x[0];
-  double *f = atom->f[0];
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
-  const double *r0c = cache.r0.data(), *inv_r0 = cache.inv_r0.data(), *kb = cache.k.data();
-  const bool k_uniform = cache.k_uniform;
-  double ebond = 0.0;
-
-  // forces on i1 summed in registers (lmp_peridem_bond_loop.h)
-  int current = -1;
-  double fsum[3] = {0.0, 0.0, 0.0};
-
-  for (int n = 0; n < nbondlist; n++) {
-    const int type = bondlist[n][2];
-    if (type <= 0) continue;
-    const int i1 = bondlist[n][0];
-    const int i2 = bondlist[n][1];
-    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-
-    const double r0 = r0c[n];
-    const double delx = x1[0] - x2[0];
-    const double dely = x1[1] - x2[1];
-    const double delz = x1[2] - x2[2];
-    const double r = std::sqrt(delx * delx + dely * dely + delz * delz);
-    const double s = peridem::stretch_from_inverse(r, inv_r0[n]);
-
-    // a bond that breaks now carries no force now, unless the user asked
-    // for the order of LAMMPS's peri styles: force first, then break
-    const bool breaks = break_flag && peridem::bond_breaks(s, s0_break[type], breakage);
-    if (breaks && !break_after_force) {
-      break_bond(n, i1, i2, r0, s0[type]);
-      continue;
+  struct OneByOne {
+    BondPeridem *self;
+    const double *x;
+    double *f;
+    int nlocal, newton_bond, eflag;
+    const double *r0c, *inv_r0, *kb;
+    bool k_uniform;
+    double k_value;
+    double delx = 0.0, dely = 0.0, delz = 0.0, r = 0.0, s = 0.0, ebond = 0.0;
+    // forces on i1 summed in registers (lmp_peridem_bond_loop.h)
+    int current = -1;
+    double fsum[3] = {0.0, 0.0, 0.0};
+    void piece(int) {}
+    void measure(int n, int i1, int i2)
+    {
+      const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+      delx = x1[0] - x2[0];
+      dely = x1[1] - x2[1];
+      delz = x1[2] - x2[2];
+      r = std::sqrt(delx * delx + dely * dely + delz * delz);
+      s = peridem::stretch_from_inverse(r, inv_r0[n]);
     }
+    double stretch(int) const { return s; }
+    double r0(int n) const { return r0c[n]; }
+    void bond(int n, int i1, int i2, int)
+    {
+      // F/|y| of bond_force(c, w, s, V_i, V_j), with c w V_i V_j (and the
+      // volume factor) in k; a positive force pulls i1 towards i2, and
+      // LAMMPS's fbond multiplies x1 - x2
+      const double k = k_uniform ? k_value : kb[n];
+      const double fbond = r > 0.0 ? -peridem::bond_force_per_length(k, inv_r0[n], 1.0 / r) : 0.0;
+      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
+                                  delz, fbond);
+      if (eflag) ebond = peridem::bond_energy(k, 1.0, s, r0c[n], 1.0, 1.0);
+      if (self->evflag) self->ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+    }
+  } kernel{this,         atom->x[0],      atom->f[0],          atom->nlocal,   force->newton_bond,
+           eflag,        cache.r0.data(), cache.inv_r0.data(), cache.k.data(), cache.k_uniform,
+           cache.k_value};
 
-    // F/|y| of bond_force(c, w, s, V_i, V_j), with c w V_i V_j (and the
-    // volume factor) in k; a positive force pulls i1 towards i2, and
-    // LAMMPS's fbond multiplies x1 - x2
-    const double k = k_uniform ? cache.k_value : kb[n];
-    const double fbond = r > 0.0 ? -peridem::bond_force_per_length(k, inv_r0[n], 1.0 / r) : 0.0;
-
-    peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
-                                delz, fbond);
-
-    if (eflag) ebond = peridem::bond_energy(k, 1.0, s, r0, 1.0, 1.0);
-    if (evflag) ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
-    if (breaks) break_bond(n, i1, i2, r0, s0[type]);
-  }
-  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+  // a bond that breaks now carries no force now, unless the user asked for the order of
+  // LAMMPS's peri styles: force first, then break
+  const PieceView pc = pieces();
+  for_each_intact_bond<BREAK_EITHER, ONE_TYPE>(pc, 0, pc.npieces, kernel);
+  if (kernel.current >= 0)
+    peridem_lmp::add_force(kernel.f, kernel.current, kernel.fsum[0], kernel.fsum[1],
+                           kernel.fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -313,72 +281,31 @@ inline double BondPeridem::stiffness(int type, double r0, double vol1, double vo
   return peridem::bond_force(c[type], w, 1.0, vol1, vol2 * vscale);
 }
 
-// LAMMPS rebuilt the bond list since the caches were filled: fix peridem/bonds counts the
-// rebuilds (neighbor->ncalls alone returns to 0 at every setup, and rerun sets up every
-// snapshot without a new init)
-bool BondPeridem::bond_list_is_new(std::size_t cached_entries) const
-{
-  return bonds_fix->bond_list_generation() != cache_generation ||
-         neighbor->ncalls != cache_ncalls || neighbor->nbondlist != int(cached_entries) ||
-         neighbor->bondlist != cache_bondlist;
-}
-
-void BondPeridem::remember_bond_list()
-{
-  cache_generation = bonds_fix->bond_list_generation();
-  cache_ncalls = neighbor->ncalls;
-  cache_bondlist = neighbor->bondlist;
-}
-
 void BondPeridem::fill_cache()
 {
-  // once per rebuild of the bond list (41 times in in.peri_impact's 1000 steps): a tight
-  // loop over flat arrays, 4.5 % of that run's samples before (session 7)
-  int **bondlist = neighbor->bondlist;
+  // once per rebuild of the bond list (41 times in in.peri_impact's 1000 steps)
+  fill_reference_lengths(cache.r0, &cache.inv_r0);
   const int nbondlist = neighbor->nbondlist;
-  remember_bond_list();
-  if (nbondlist == 0) { // the bond list and x0 may not exist yet on this rank
-    cache.r0.clear();
-    cache.inv_r0.clear();
-    cache.k.clear();
-    cache.k_uniform = true;
-    cache.k_value = 0.0;
-    fill_pieces();
-    return;
-  }
-  const int *bl = bondlist[0];
-  const double *x0 = atom->x0[0];
+  const int *bl = nbondlist > 0 ? neighbor->bondlist[0] : nullptr;
   const double *vfrac = atom->vfrac;
-  // resize, not assign: every intact entry is written below, and clearing 16 bytes per bond
-  // at each rebuild was a quarter of this function's time; the entries of broken bonds
-  // (type <= 0) keep old finite values that the chunked loop computes with and discards
-  cache.r0.resize(nbondlist, 0.0);
-  cache.inv_r0.resize(nbondlist, 0.0);
-  double *r0c = cache.r0.data(), *inv_r0 = cache.inv_r0.data();
+  const double *r0c = cache.r0.data();
   // k is often one value for the whole list (one material, equal node volumes, constant
   // micromodulus, no volume correction: the beds): then the force loop reads that value
   // instead of streaming 8 bytes per bond (28 -> 20 bytes per bond with the bond list and
   // 1/r0); the same double, so the same forces to the bit
-  int mismatch = -1;
-  bool found = false;
+  bool uniform = true, found = false;
   cache.k_value = 0.0;
-  for (int n = 0; n < nbondlist; n++) {
+  for (int n = 0; n < nbondlist && uniform; n++) {
     const int *b = bl + 3 * n;
-    const int type = b[2];
-    if (type <= 0) continue;
-    const int i1 = b[0], i2 = b[1];
-    const double r0 = reference_length_flat(x0, i1, i2);
-    r0c[n] = r0;
-    inv_r0[n] = 1.0 / r0;
-    if (mismatch >= 0) continue;
-    const double k = stiffness(type, r0, vfrac[i1], vfrac[i2]);
+    if (b[2] <= 0) continue;
+    const double k = stiffness(b[2], r0c[n], vfrac[b[0]], vfrac[b[1]]);
     if (!found) {
       found = true;
       cache.k_value = k;
     } else if (k != cache.k_value)
-      mismatch = n;
+      uniform = false;
   }
-  cache.k_uniform = mismatch < 0; // also with no intact bond at all (k_value 0)
+  cache.k_uniform = uniform; // also with no intact bond at all (k_value 0)
   if (cache.k_uniform) {
     std::vector<double>().swap(cache.k);
   } else {
@@ -389,249 +316,26 @@ void BondPeridem::fill_cache()
       if (b[2] > 0) k[n] = stiffness(b[2], r0c[n], vfrac[b[0]], vfrac[b[1]]);
     }
   }
-  fill_pieces();
-}
-
-// the bond list as the chunked loop reads it (BondCache): i2 per entry, i1 per piece of
-// consecutive entries with one i1, the pieces grouped into chunks of at most CHUNK entries,
-// and one type for the whole list when the intact entries share it
-void BondPeridem::fill_pieces()
-{
-  const int nbondlist = neighbor->nbondlist;
-  cache.partner.resize(nbondlist);
-  cache.piece_atom.clear();
-  cache.piece_start.clear();
-  cache.chunk_piece.clear();
-  cache.type.clear();
-  cache.type_all = 1; // any valid type when no entry is intact: no intact entry reads it
-  if (nbondlist == 0) {
-    cache.piece_start.push_back(0);
-    cache.chunk_piece.push_back(0);
-    return;
-  }
-  const int *bl = neighbor->bondlist[0];
-  int *partner = cache.partner.data();
-  int first_type = 0;
-  bool mixed = false;
-  for (int n = 0; n < nbondlist; n++) {
-    const int *b = bl + 3 * n;
-    const int i1 = b[0];
-    partner[n] = b[2] > 0 ? b[1] : i1;
-    if (b[2] > 0) {
-      if (first_type == 0) first_type = b[2];
-      mixed = mixed || b[2] != first_type;
-    }
-    if (cache.piece_atom.empty() || cache.piece_atom.back() != i1 ||
-        n - cache.piece_start.back() == CHUNK) {
-      cache.piece_atom.push_back(i1);
-      cache.piece_start.push_back(n);
-    }
-  }
-  const int npieces = int(cache.piece_atom.size());
-  cache.piece_start.push_back(nbondlist);
-  const int *start = cache.piece_start.data();
-  for (int p = 0; p < npieces; p++)
-    if (cache.chunk_piece.empty() || start[p + 1] - start[cache.chunk_piece.back()] > CHUNK)
-      cache.chunk_piece.push_back(p);
-  cache.chunk_piece.push_back(npieces);
-  if (mixed) {
-    cache.type_all = 0;
-    cache.type.resize(nbondlist);
-    for (int n = 0; n < nbondlist; n++) cache.type[n] = bl[3 * n + 2];
-  } else if (first_type > 0)
-    cache.type_all = first_type;
 }
 
 /* ----------------------------------------------------------------------
-   bond n broke: type 0 in this step's bond list, and out of the bond
-   arrays (fix peridem/bonds keeps count), so that its nodes may separate
-   without LAMMPS missing a bond partner. Another rank that holds the bond
-   (newton_bond off, partner owned there) computes the same stretch from
-   the same positions and breaks it too.
+   bond-based: the bond force c w s V_i V_j (times the volume factor) is
+   linear in the extension e = r - |xi| with slope c w V_i V_j/|xi|: the
+   spring is exact, not a bound
 ------------------------------------------------------------------------- */
 
-void BondPeridem::break_bond(int n, int i1, int i2, double r0, double s0type)
+void BondPeridem::stability_springs(std::vector<double> &k)
 {
-  neighbor->bondlist[n][2] = 0;
-  // the list by pieces, which both bond styles read (fill_pieces()): partner i1 marks the
-  // entry broken (after a fill, partner has one entry per entry of the bond list)
-  if (std::size_t(n) < cache.partner.size()) cache.partner[n] = i1;
-  double **x = atom->x;
-  double dy[3];
-  for (int d = 0; d < 3; d++) dy[d] = x[i2][d] - x[i1][d];
-  domain->minimum_image(dy[0], dy[1], dy[2]);
-  // the damage Z a broken bond leaves at its nodes: the stretch that broke it over s0 (>= 1;
-  // compute peridem/damage explains the choice)
-  const double z = peridem::z_stretch_term(
-      peridem::stretch(std::sqrt(dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]), r0), s0type);
-  bonds_fix->bond_broken(i1, i2, z);
-}
-
-/* ----------------------------------------------------------------------
-   once per run: bonds must join nodes of one grain and be no longer than
-   the horizon of their type
-------------------------------------------------------------------------- */
-
-void BondPeridem::validate_bonds()
-{
-  validate_next = 0;
   int **bondlist = neighbor->bondlist;
-  const tagint *tag = atom->tag;
-  const tagint *molecule = atom->molecule;
-  for (int n = 0; n < neighbor->nbondlist; n++) {
+  const int nbondlist = neighbor->nbondlist;
+  k.assign(nbondlist, 0.0);
+  for (int n = 0; n < nbondlist; n++) {
     const int type = bondlist[n][2];
     if (type <= 0) continue;
-    const int i1 = bondlist[n][0];
-    const int i2 = bondlist[n][1];
-    if (!cohesive && molecule[i1] != molecule[i2])
-      error->one(FLERR,
-                 "{}: bond between atoms {} and {} joins grains {} and {}; peridynamic bonds "
-                 "join nodes of one grain (use bond_style peridem cohesive yes to allow this)",
-                 STYLE, tag[i1], tag[i2], molecule[i1], molecule[i2]);
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
     const double r0 = reference_length(i1, i2);
-    if (!(r0 <= horizon[type] * (1.0 + 1e-10))) // NaN too
-      error->one(FLERR,
-                 "{}: bond between atoms {} and {} (type {}) has reference length {} longer "
-                 "than the horizon {}",
-                 STYLE, tag[i1], tag[i2], type, r0, horizon[type]);
-    if (r0 <= 0.0)
-      error->one(FLERR, "{}: atoms {} and {} are bonded but have the same reference position",
-                 STYLE, tag[i1], tag[i2]);
+    if (r0 > 0.0) k[n] = bond_stiffness(type, r0, i1, i2) / r0;
   }
-  report_time_step();
-}
-
-/* ----------------------------------------------------------------------
-   bond_style peridem [break tension|absolute|off] [break_order before_force|after_force]
-                      [volume_correction none|linear] [cohesive no|yes]
-------------------------------------------------------------------------- */
-
-void BondPeridem::settings(int narg, char **arg)
-{
-  for (int iarg = 0; iarg < narg; iarg += 2) {
-    const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
-    const std::string value = arg[iarg + 1];
-    if (key == "break") {
-      const int mode = peridem_lmp::choice(lmp, STYLE, key, value, {"tension", "absolute", "off"});
-      break_flag = mode != 2;
-      if (mode == 1)
-        breakage = peridem::BreakageMode::Absolute;
-      else
-        breakage = peridem::BreakageMode::Tension;
-    } else if (key == "break_order") {
-      break_after_force =
-          peridem_lmp::choice(lmp, STYLE, key, value, {"before_force", "after_force"});
-    } else if (key == "volume_correction") {
-      volume_correction = peridem_lmp::choice(lmp, STYLE, key, value, {"none", "linear"});
-    } else if (key == "cohesive") {
-      cohesive = peridem_lmp::yes_no(lmp, STYLE, key, value);
-    } else
-      error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void BondPeridem::allocate()
-{
-  allocated = 1;
-  const int np1 = atom->nbondtypes + 1;
-  memory->create(setflag, np1, "bond:setflag");
-  memory->create(c, np1, "bond:c");
-  memory->create(s0, np1, "bond:s0");
-  memory->create(horizon, np1, "bond:horizon");
-  memory->create(spacing, np1, "bond:spacing");
-  memory->create(conic, np1, "bond:conic");
-  memory->create(breakable, np1, "bond:breakable");
-  memory->create(s0_break, np1, "bond:s0_break");
-  for (int i = 0; i < np1; i++) {
-    setflag[i] = 0;
-    c[i] = s0[i] = horizon[i] = spacing[i] = s0_break[i] = 0.0;
-    conic[i] = 0;
-    breakable[i] = 1;
-  }
-}
-
-void BondPeridem::set_type(int type, const TypeParams &p)
-{
-  c[type] = p.c;
-  s0[type] = p.s0;
-  horizon[type] = p.horizon;
-  spacing[type] = p.spacing;
-  conic[type] = p.micromodulus == peridem::Micromodulus::Conic;
-  breakable[type] = p.breakable;
-  setflag[type] = 1;
-}
-
-/* ----------------------------------------------------------------------
-   bond_coeff N material FILE NAME [horizon eps] [Gc value] [micromodulus m] [spacing h]
-   bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h]
-   bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h]
-------------------------------------------------------------------------- */
-
-BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char *style)
-{
-  if (narg < 2) error->all(FLERR, "{}: {} needs a bond type and its parameters", COEFF, style);
-  if (!allocated) allocate();
-  CoeffArgs a;
-  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, a.ilo, a.ihi, error);
-
-  auto positive = [&](int iarg, const char *what) {
-    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, what);
-    const double v = peridem_lmp::number(lmp, COEFF, what, arg[iarg + 1]);
-    if (!(v > 0.0))
-      error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, style, arg[iarg + 1]);
-    return v;
-  };
-
-  for (int iarg = 1; iarg < narg;) {
-    const std::string key = arg[iarg];
-    if (key == "material") {
-      if (iarg + 2 >= narg)
-        error->all(FLERR, "{}: material needs a file name and a material name", COEFF);
-      a.material = peridem_lmp::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
-      a.haveMaterial = true;
-      a.origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
-      iarg += 3;
-      continue;
-    }
-    if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, key);
-    if (key == "micromodulus") {
-      a.micro = peridem_lmp::parse_micromodulus(lmp, COEFF, arg[iarg + 1]);
-      a.haveMicro = true;
-    } else if (key == "influence") {
-      a.influence = arg[iarg + 1];
-      a.haveInfluence = true;
-    } else if (key == "break") {
-      a.breakable = peridem_lmp::yes_no(lmp, COEFF, key, arg[iarg + 1]);
-    } else if (key == "E") {
-      a.E = positive(iarg, "E (Young's modulus)");
-      a.haveE = true;
-    } else if (key == "K") {
-      a.K = positive(iarg, "K (bulk modulus)");
-      a.haveK = true;
-    } else if (key == "G") {
-      a.G = positive(iarg, "G (shear modulus)");
-      a.haveG = true;
-    } else if (key == "Gc") {
-      a.Gc = positive(iarg, "Gc (fracture energy)");
-      a.haveGc = true;
-    } else if (key == "c") {
-      a.cval = positive(iarg, "c (spring constant)");
-      a.haveC = true;
-    } else if (key == "s0") {
-      a.s0 = positive(iarg, "s0 (critical stretch)");
-      a.haveS0 = true;
-    } else if (key == "horizon") {
-      a.eps = positive(iarg, "horizon");
-    } else if (key == "spacing") {
-      a.h = positive(iarg, "spacing");
-    } else
-      error->all(FLERR, "{}: unknown keyword {} for {}", COEFF, key, style);
-    iarg += 2;
-  }
-  return a;
 }
 
 /* ----------------------------------------------------------------------
@@ -641,19 +345,46 @@ BondPeridem::CoeffArgs BondPeridem::parse_coeff(int narg, char **arg, const char
    bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h] [break yes|no]
 ------------------------------------------------------------------------- */
 
+bool BondPeridem::coeff_keyword(const std::string &key, const char *value, const char *style)
+{
+  ModelArgs &m = margs;
+  if (key == "micromodulus") {
+    m.micro = peridem_lmp::parse_micromodulus(lmp, COEFF, value);
+    m.haveMicro = true;
+  } else if (key == "E") {
+    m.E = coeff_positive("E (Young's modulus)", value, style);
+    m.haveE = true;
+  } else if (key == "K") {
+    m.K = coeff_positive("K (bulk modulus)", value, style);
+    m.haveK = true;
+  } else if (key == "c") {
+    m.cval = coeff_positive("c (spring constant)", value, style);
+    m.haveC = true;
+  } else if (key == "G") {
+    coeff_positive("G (shear modulus)", value, style);
+    m.haveG = true;
+  } else if (key == "influence") {
+    m.haveInfluence = true;
+  } else
+    return false;
+  return true;
+}
+
 void BondPeridem::coeff(int narg, char **arg)
 {
+  margs = ModelArgs();
   const CoeffArgs a = parse_coeff(narg, arg, STYLE);
+  const ModelArgs &m = margs;
   const int dimension = domain->dimension;
-  if (a.haveG || a.haveInfluence)
+  if (m.haveG || m.haveInfluence)
     error->all(FLERR,
                "{}: {} is a state-based coefficient; {} is bond-based (use bond_style "
                "peridem/lps for K and G)",
-               COEFF, a.haveG ? "G" : "influence", STYLE);
-  const double E = a.E, K = a.K, Gc = a.Gc, cval = a.cval, s0val = a.s0, eps = a.eps, h = a.h;
-  const bool haveE = a.haveE, haveK = a.haveK, haveGc = a.haveGc, haveC = a.haveC,
-             haveS0 = a.haveS0, haveMaterial = a.haveMaterial, haveMicro = a.haveMicro;
-  const peridem::Micromodulus micro = a.micro;
+               COEFF, m.haveG ? "G" : "influence", STYLE);
+  const double E = m.E, K = m.K, Gc = a.Gc, cval = m.cval, s0val = a.s0, eps = a.eps, h = a.h;
+  const bool haveE = m.haveE, haveK = m.haveK, haveGc = a.haveGc, haveC = m.haveC,
+             haveS0 = a.haveS0, haveMaterial = a.haveMaterial, haveMicro = m.haveMicro;
+  const peridem::Micromodulus micro = m.micro;
   peridem::Material material = a.material;
   std::string origin = a.origin;
   const int ilo = a.ilo, ihi = a.ihi;
@@ -666,7 +397,12 @@ void BondPeridem::coeff(int narg, char **arg)
                COEFF, STYLE);
   if (haveE && haveK) error->all(FLERR, "{}: give E or K, not both", COEFF);
 
-  TypeParams p;
+  // the coefficients of the types, as derived from the keywords
+  struct {
+    double c = 0.0, s0 = 0.0, horizon = 0.0;
+    peridem::Micromodulus micromodulus = peridem::Micromodulus::Constant;
+    int breakable = 1;
+  } p;
   try {
     if (haveMaterial) {
       p.micromodulus = haveMicro ? micro : material.micromodulus;
@@ -712,9 +448,12 @@ void BondPeridem::coeff(int narg, char **arg)
   } catch (peridem::ParameterError &e) {
     error->all(FLERR, "{}: {}", COEFF, e.what());
   }
-  p.spacing = h;
   p.breakable = a.breakable;
-  for (int i = ilo; i <= ihi; i++) set_type(i, p);
+  for (int i = ilo; i <= ihi; i++) {
+    set_shared_type(i, p.s0, p.horizon, h, p.breakable);
+    c[i] = p.c;
+    conic[i] = p.micromodulus == peridem::Micromodulus::Conic;
+  }
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "{} type {}: c = {:.10g}, s0 = {:.10g}, horizon = {:.10g}, {} micromodulus, "
@@ -724,110 +463,18 @@ void BondPeridem::coeff(int narg, char **arg)
                    p.breakable ? "" : ", unbreakable");
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   restart: tag, the shared settings, then per type c, s0, horizon, spacing,
+   micromodulus and break flag
+------------------------------------------------------------------------- */
 
-void BondPeridem::init_style()
-{
-  if (!atom->vfrac_flag || !atom->x0_flag || !atom->molecule_flag || !atom->rmass_flag)
-    error->all(FLERR,
-               "{} requires atom style peridem (per-atom volume, reference position x0 and "
-               "grain ID)",
-               STYLE);
-
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    s0_break[i] = breakable[i] ? s0[i] : std::numeric_limits<double>::infinity();
-  for (int i = 1; i <= atom->nbondtypes; i++) {
-    if (!setflag[i]) continue;
-    if (volume_correction && spacing[i] <= 0.0) {
-      if (domain->lattice && domain->lattice->style != Lattice::NONE)
-        spacing[i] = domain->lattice->xlattice;
-      else
-        error->all(FLERR,
-                   "{}: volume_correction linear needs the node spacing of bond type {}: add "
-                   "spacing to its bond_coeff (or define a lattice)",
-                   STYLE, i);
-    }
-  }
-
-  // Ghost atoms must hold every bond partner when LAMMPS rebuilds its bond
-  // list, whatever the pair cutoff. An intact bond (reference length <=
-  // horizon) is stretched at most s0 plus one step's increment when bonds
-  // break; without breakage it may stretch without bound and 50 % is assumed,
-  // LAMMPS's own estimate (Comm::get_comm_cutoff). A tighter cutoff means
-  // fewer ghosts: on 2 ranks of the in.peri.pmb impact 1.05 h instead of
-  // 1.5 h (+ skin) saves a fifth of the ghost atoms.
-  double max_s0 = 0.0;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i]) max_s0 = std::max(max_s0, breakable[i] ? s0[i] : 1.0);
-  stretch_allowance = break_flag ? std::min(0.5, max_s0 + 0.05) : 0.5;
-  // computed as Comm::get_comm_cutoff computes its estimate from
-  // equilibrium_distance(), so that the two agree to the last bit
-  double longest = 0.0;
-  for (int i = 1; i <= atom->nbondtypes; i++)
-    if (setflag[i]) longest = std::max(longest, equilibrium_distance(i));
-  const double needed = longest * 1.5 + neighbor->skin;
-  if (comm->cutghostuser < needed) {
-    comm->cutghostuser = needed;
-    if (comm->me == 0)
-      utils::logmesg(lmp,
-                     "{}: communication cutoff set to {:.8g} (largest horizon x {:.4g} + skin)\n",
-                     STYLE, needed, 1.0 + stretch_allowance);
-  }
-  // the bookkeeping of broken bonds
-  const int ifix = modify->find_fix(FixPeridemBonds::ID);
-  if (ifix < 0)
-    bonds_fix = dynamic_cast<FixPeridemBonds *>(
-        modify->add_fix(fmt::format("{} all peridem/bonds", FixPeridemBonds::ID)));
-  else
-    bonds_fix = dynamic_cast<FixPeridemBonds *>(modify->fix[ifix]);
-  if (!bonds_fix)
-    error->all(FLERR, "{}: fix {} is not a fix peridem/bonds", STYLE, FixPeridemBonds::ID);
-
-  // Nodes in memory grain by grain, in the order of creation (peridem_atom_order.h: the
-  // 2000-grain bed's bond loop 4.8 -> 3.6 ns per bond), at the frequency of LAMMPS's sort
-  // (atom_modify sort N, 1000 by default), instead of LAMMPS's spatial sort, which a bin
-  // size larger than any box turns into a no-op (Atom::sort() returns with one bin).
-  // atom_modify sort 0 0 leaves the atoms as they are; a bin size given by the user
-  // (atom_modify sort N binsize) keeps LAMMPS's spatial sort as asked.
-  const bool user_bins = atom->userbinsize > 0.0 && atom->userbinsize != NO_SPATIAL_SORT;
-  const bool grain_order = !user_bins && atom->sortfreq > 0;
-  if (grain_order && atom->userbinsize != NO_SPATIAL_SORT) {
-    atom->userbinsize = NO_SPATIAL_SORT;
-    if (comm->me == 0)
-      utils::logmesg(lmp,
-                     "{}: nodes kept in memory grain by grain every {} steps, instead of "
-                     "LAMMPS's spatial sort (atom_modify sort N binsize: that sort instead)\n",
-                     STYLE, atom->sortfreq);
-  }
-  bonds_fix->set_grain_order(grain_order);
-  validate_next = 1;
-  cache_ncalls = cache_generation = -1;
-}
-
-/* ---------------------------------------------------------------------- */
-
-// LAMMPS uses this only to estimate the communication cutoff (1.5 x this +
-// skin, Comm::get_comm_cutoff; it warns when the cutoff in use is shorter):
-// return the reach of a bond of this type over 1.5, so that the estimate is
-// the cutoff init_style() sets.
-double BondPeridem::equilibrium_distance(int i)
-{
-  return horizon[i] * (1.0 + stretch_allowance) / 1.5;
-}
-
-/* ---------------------------------------------------------------------- */
-
-// LAMMPS calls write/read_restart_settings() of a bond style only under
-// bond_style hybrid: without these calls the settings (volume_correction,
-// break_order, ...) were lost in a restart
 void BondPeridem::write_restart(FILE *fp)
 {
   peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_BOND_PERIDEM);
   write_restart_settings(fp);
-  const int n = atom->nbondtypes;
-  for (double *a : {c, s0, horizon, spacing}) fwrite(&a[1], sizeof(double), n, fp);
-  fwrite(&conic[1], sizeof(int), n, fp);
-  fwrite(&breakable[1], sizeof(int), n, fp);
+  for (double *a : {c, s0, horizon, spacing}) write_types(fp, a);
+  write_types(fp, conic);
+  write_types(fp, breakable);
 }
 
 void BondPeridem::read_restart(FILE *fp)
@@ -836,14 +483,9 @@ void BondPeridem::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   const int n = atom->nbondtypes;
-  for (double *a : {c, s0, horizon, spacing}) {
-    if (comm->me == 0) utils::sfread(FLERR, &a[1], sizeof(double), n, fp, nullptr, error);
-    MPI_Bcast(&a[1], n, MPI_DOUBLE, 0, world);
-  }
-  if (comm->me == 0) utils::sfread(FLERR, &conic[1], sizeof(int), n, fp, nullptr, error);
-  MPI_Bcast(&conic[1], n, MPI_INT, 0, world);
-  if (comm->me == 0) utils::sfread(FLERR, &breakable[1], sizeof(int), n, fp, nullptr, error);
-  MPI_Bcast(&breakable[1], n, MPI_INT, 0, world);
+  for (double *a : {c, s0, horizon, spacing}) read_types(fp, a);
+  read_types(fp, conic);
+  read_types(fp, breakable);
   constexpr double big = std::numeric_limits<double>::max();
   peridem_lmp::check_restart_values(lmp, STYLE, "bond constant c", &c[1], n, 1e-300, big);
   peridem_lmp::check_restart_values(lmp, STYLE, "critical stretch", &s0[1], n, 1e-300, big);
@@ -854,26 +496,6 @@ void BondPeridem::read_restart(FILE *fp)
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
-void BondPeridem::write_restart_settings(FILE *fp)
-{
-  const int settings[5] = {break_flag, breakage == peridem::BreakageMode::Absolute,
-                           volume_correction, cohesive, break_after_force};
-  fwrite(settings, sizeof(int), 5, fp);
-}
-
-void BondPeridem::read_restart_settings(FILE *fp)
-{
-  int settings[5];
-  if (comm->me == 0) utils::sfread(FLERR, settings, sizeof(int), 5, fp, nullptr, error);
-  MPI_Bcast(settings, 5, MPI_INT, 0, world);
-  peridem_lmp::check_restart_values(lmp, STYLE, "setting", settings, 5, 0, 1);
-  break_flag = settings[0];
-  breakage = settings[1] ? peridem::BreakageMode::Absolute : peridem::BreakageMode::Tension;
-  volume_correction = settings[2];
-  cohesive = settings[3];
-  break_after_force = settings[4];
-}
-
 /* ----------------------------------------------------------------------
    Bond Coeffs in the direct form, so a data file reproduces c and s0
 ------------------------------------------------------------------------- */
@@ -881,10 +503,10 @@ void BondPeridem::read_restart_settings(FILE *fp)
 void BondPeridem::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nbondtypes; i++) {
-    std::string line = fmt::format("{} c {:.17g} s0 {:.17g} horizon {:.17g} micromodulus {}", i,
-                                   c[i], s0[i], horizon[i], conic[i] ? "conic" : "constant");
-    if (spacing[i] > 0.0) line += fmt::format(" spacing {:.17g}", spacing[i]);
-    if (!breakable[i]) line += " break no";
+    const std::string line =
+        fmt::format("{} c {:.17g} s0 {:.17g} horizon {:.17g} micromodulus {}", i, c[i], s0[i],
+                    horizon[i], conic[i] ? "conic" : "constant") +
+        data_tail(i);
     fprintf(fp, "%s\n", line.c_str());
   }
 }
@@ -909,26 +531,14 @@ void *BondPeridem::extract(const char *str, int &dim)
 {
   dim = 1;
   if (strcmp(str, "c") == 0) return (void *)c;
-  if (strcmp(str, "s0") == 0) return (void *)s0;
-  if (strcmp(str, "horizon") == 0) return (void *)horizon;
   if (strcmp(str, "conic") == 0) return (void *)conic; // int per type: 1 conic micromodulus
-  dim = 0;
-  return nullptr;
+  return BondPeridemBase::extract(str, dim);
 }
 
 /* ---------------------------------------------------------------------- */
 
 double BondPeridem::memory_usage()
 {
-  return Bond::memory_usage() +
-         (cache.r0.capacity() + cache.inv_r0.capacity() + cache.k.capacity()) * sizeof(double) +
-         pieces_memory();
-}
-
-double BondPeridem::pieces_memory() const
-{
-  return double(cache.partner.capacity() + cache.piece_atom.capacity() +
-                cache.piece_start.capacity() + cache.chunk_piece.capacity() +
-                cache.type.capacity()) *
-         sizeof(int);
+  return BondPeridemBase::memory_usage() +
+         (cache.r0.capacity() + cache.inv_r0.capacity() + cache.k.capacity()) * sizeof(double);
 }

@@ -10,9 +10,10 @@
 /* ----------------------------------------------------------------------
    PERIDEM: bond_style peridem/lps, the linear peridynamic solid of
    Jha, Desai, Bhattacharya & Lipton (PeriDEM, eq. 5-10, 33-34) on LAMMPS's
-   bond list. The physics is in peridem_lps_law.h; coefficient parsing,
-   the bond cache's refresh rule, the ghost cutoff, validation and the one
-   breakage path (fix peridem/bonds) are bond_style peridem's.
+   bond list. The physics is in peridem_lps_law.h; the shared keywords, the
+   bond list by pieces and its refresh rule, the ghost cutoff, validation,
+   the breakage decision and the one break path are the base's
+   (bond_peridem_base.h).
 
    Per step: (1) dilation pass over the bonds: extension of each bond,
    breakage (unless break_order after_force), sum_j omega beta r e V_j into
@@ -29,17 +30,20 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
-#include "lmp_peridem_bond_loop.h"
-#include "lmp_peridem_restart.h"
 #include "force.h"
 #include "memory.h"
 #include "neighbor.h"
 
+#include "lmp_peridem_bond_loop.h"
+#include "lmp_peridem_material.h"
 #include "lmp_peridem_parse.h"
+#include "lmp_peridem_restart.h"
+#include "peridem_lps_law.h"
 
+#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstring>
+#include <limits>
 
 using namespace LAMMPS_NS;
 
@@ -53,7 +57,7 @@ const char *const PLANE[] = {"strain", "stress", "3d"};
 /* ---------------------------------------------------------------------- */
 
 BondPeridemLPS::BondPeridemLPS(LAMMPS *lmp)
-    : BondPeridem(lmp), bulk(nullptr), shear(nullptr), influence(nullptr),
+    : BondPeridemBase(lmp), bulk(nullptr), shear(nullptr), influence(nullptr),
       plane(peridem::LpsPlane::PlaneStrain), dfac(3.0), sum(nullptr), theta_over_m(nullptr),
       inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1)
 {
@@ -71,11 +75,8 @@ BondPeridemLPS::~BondPeridemLPS()
   memory->destroy(theta);
 }
 
-void BondPeridemLPS::allocate_lps()
+void BondPeridemLPS::allocate_model(int np1)
 {
-  if (!allocated) allocate();
-  if (bulk) return;
-  const int np1 = atom->nbondtypes + 1;
   memory->create(bulk, np1, "bond:bulk");
   memory->create(shear, np1, "bond:shear");
   memory->create(influence, np1, "bond:influence");
@@ -104,12 +105,12 @@ void BondPeridemLPS::grow_lps()
    the extension in the two dilations; refreshed as bond_style peridem's
 ------------------------------------------------------------------------- */
 
-void BondPeridemLPS::fill_lps_cache()
+void BondPeridemLPS::fill_cache()
 {
+  fill_reference_lengths(lcache.r0, nullptr);
   int **bondlist = neighbor->bondlist;
   const int nbondlist = neighbor->nbondlist;
   const double *vfrac = atom->vfrac;
-  lcache.r0.resize(nbondlist);
   lcache.k.resize(nbondlist);
   lcache.wi.resize(nbondlist);
   lcache.wj.resize(nbondlist);
@@ -118,21 +119,17 @@ void BondPeridemLPS::fill_lps_cache()
     const int type = bondlist[n][2];
     if (type <= 0) continue;
     const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-    const double r0 = reference_length(i1, i2);
+    const double r0 = lcache.r0[n];
     const double w =
         peridem::influence_value(peridem::Influence(influence[type]), r0, horizon[type]);
     const double beta = volume_correction
                             ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM, r0,
                                                      horizon[type], spacing[type])
                             : 1.0;
-    lcache.r0[n] = r0;
     lcache.k[n] = w * beta * vfrac[i1] * vfrac[i2];
     lcache.wi[n] = w * beta * r0 * vfrac[i2];
     lcache.wj[n] = w * beta * r0 * vfrac[i1];
   }
-  remember_bond_list();
-  // the bond list by pieces with one i1, as bond_style peridem's loop reads it
-  fill_pieces();
 }
 
 /* ----------------------------------------------------------------------
@@ -189,9 +186,7 @@ void BondPeridemLPS::compute_weighted_volume()
 
 void BondPeridemLPS::compute(int eflag, int vflag)
 {
-  ev_init(eflag, vflag);
-  if (validate_next) validate_bonds();
-  if (bond_list_is_new(lcache.size())) fill_lps_cache();
+  begin_compute(eflag, vflag);
   grow_lps();
   if (check_wvolume) compute_weighted_volume();
 
@@ -201,7 +196,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 
   // (1) dilation pass
   for (int i = 0; i < nall; i++) sum[i] = 0.0;
-  const bool planar = domain->dimension == 2, one_type = cache.type_all > 0;
+  const bool planar = domain->dimension == 2, one_type = bond_pieces.type_all > 0;
   if (one_type)
     planar ? dilation_pass<2, true>() : dilation_pass<3, true>();
   else
@@ -222,9 +217,12 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 
   // (3) force pass: steps with energy or virial, and LAMMPS's break order, one bond at a time
   // with z; the others without z in 2d (the same forces, to the bit)
-  if (evflag || (break_after_force && break_flag))
-    force_pass_one_by_one(eflag);
-  else if (one_type)
+  if (evflag || (break_after_force && break_flag)) {
+    if (one_type)
+      force_pass_one_by_one<true>(eflag);
+    else
+      force_pass_one_by_one<false>(eflag);
+  } else if (one_type)
     planar ? force_pass<2, true>() : force_pass<3, true>();
   else
     planar ? force_pass<2, false>() : force_pass<3, false>();
@@ -244,31 +242,31 @@ void BondPeridemLPS::compute(int eflag, int vflag)
 template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
 {
   if (neighbor->nbondlist == 0) return; // the bond list may not exist yet on this rank
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
-  const double *x = atom->x[0];
-  const double *r0c = lcache.r0.data(), *wic = lcache.wi.data(), *wjc = lcache.wj.data();
-  double *len = current_length.data();
-  const PieceView pc = pieces();
-
-  int current = -1;
-  double acc = 0.0;
-  for (int p = 0; p < pc.npieces; p++) {
-    const int i1 = pc.atom[p];
-    // the sums of the previous i1 are complete: LAMMPS lists the bonds of one i1 in one
-    // run, so only pieces of one i1 follow each other (the same additions, in the same order,
-    // as one entry at a time; a piece whose entries all broke adds 0 to its i1)
-    if (i1 != current) {
-      if (current >= 0) sum[current] += acc;
-      current = i1;
-      acc = 0.0;
+  struct Dilation {
+    const double *x;
+    int nlocal, newton_bond;
+    const double *r0c, *wic, *wjc;
+    double *len, *sum;
+    int current = -1;
+    double acc = 0.0;
+    double x10 = 0.0, x11 = 0.0, x12 = 0.0, r = 0.0, ext = 0.0;
+    void piece(int i1)
+    {
+      // the sums of the previous i1 are complete: LAMMPS lists the bonds of one i1 in one
+      // run, so only pieces of one i1 follow each other (the same additions, in the same
+      // order, as one entry at a time; a piece whose entries all broke adds 0 to its i1)
+      if (i1 != current) {
+        if (current >= 0) sum[current] += acc;
+        current = i1;
+        acc = 0.0;
+      }
+      const double *x1 = x + 3 * i1;
+      x10 = x1[0];
+      x11 = x1[1];
+      x12 = DIM == 3 ? x1[2] : 0.0;
     }
-    const double *x1 = x + 3 * i1;
-    const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
-    for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
-      const int i2 = pc.partner[n];
-      if (i2 == i1) continue; // broken
-      const int type = pc.type_of<ONE_TYPE>(n);
+    void measure(int n, int, int i2)
+    {
       const double *x2 = x + 3 * i2;
       const double delx = x10 - x2[0], dely = x11 - x2[1];
       double rsq = delx * delx + dely * dely;
@@ -276,20 +274,23 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
         const double delz = x12 - x2[2];
         rsq += delz * delz;
       }
-      const double r = std::sqrt(rsq);
-      const double ext = r - r0c[n];
-      // a bond that breaks now takes no part in this step (default order)
-      if (!break_after_force && break_flag &&
-          peridem::bond_breaks(ext / r0c[n], s0_break[type], breakage)) {
-        break_bond(n, i1, i2, r0c[n], s0[type]);
-        continue;
-      }
+      r = std::sqrt(rsq);
+      ext = r - r0c[n];
+    }
+    double stretch(int n) const { return ext / r0c[n]; }
+    double r0(int n) const { return r0c[n]; }
+    void bond(int n, int, int i2, int)
+    {
       len[n] = r;
       acc += wic[n] * ext;
       if (newton_bond || i2 < nlocal) sum[i2] += wjc[n] * ext;
     }
-  }
-  if (current >= 0) sum[current] += acc;
+  } kernel{atom->x[0],       atom->nlocal,     force->newton_bond,    lcache.r0.data(),
+           lcache.wi.data(), lcache.wj.data(), current_length.data(), sum};
+  const PieceView pc = pieces();
+  // a bond that breaks now takes no part in this step (default order)
+  for_each_intact_bond<BREAK_BEFORE_FORCE, ONE_TYPE>(pc, 0, pc.npieces, kernel);
+  if (kernel.current >= 0) sum[kernel.current] += kernel.acc;
 }
 
 /* ----------------------------------------------------------------------
@@ -302,26 +303,27 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()
 template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
 {
   if (neighbor->nbondlist == 0) return; // the bond list may not exist yet on this rank
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
-  const double *x = atom->x[0];
-  double *f = atom->f[0];
-  const double *r0c = lcache.r0.data(), *kc = lcache.k.data();
-  const double *len = current_length.data();
-  const peridem::LpsConstants *lc = constants.data();
-  const PieceView pc = pieces();
-
-  int current = -1;
-  double fsum[3] = {0.0, 0.0, 0.0};
-  for (int p = 0; p < pc.npieces; p++) {
-    const int i1 = pc.atom[p];
-    const double *x1 = x + 3 * i1;
-    const double x10 = x1[0], x11 = x1[1], x12 = DIM == 3 ? x1[2] : 0.0;
-    const double tm1 = theta_over_m[i1], im1 = inv_m[i1];
-    for (int n = pc.start[p], e = pc.start[p + 1]; n < e; n++) {
-      const int i2 = pc.partner[n];
-      if (i2 == i1) continue; // broken
-      const int type = pc.type_of<ONE_TYPE>(n);
+  struct Forces {
+    const double *x;
+    double *f;
+    int nlocal, newton_bond;
+    const double *r0c, *kc, *len, *theta_over_m, *inv_m;
+    const peridem::LpsConstants *lc;
+    double x10 = 0.0, x11 = 0.0, x12 = 0.0, tm1 = 0.0, im1 = 0.0;
+    int current = -1;
+    double fsum[3] = {0.0, 0.0, 0.0};
+    void piece(int i1)
+    {
+      const double *x1 = x + 3 * i1;
+      x10 = x1[0];
+      x11 = x1[1];
+      x12 = DIM == 3 ? x1[2] : 0.0;
+      tm1 = theta_over_m[i1];
+      im1 = inv_m[i1];
+    }
+    void measure(int, int, int) {}
+    void bond(int n, int i1, int i2, int type)
+    {
       const double *x2 = x + 3 * i2;
       const double r = len[n];
       const double F = peridem::lps_bond_force(lc[type], kc[n], r0c[n], r - r0c[n], tm1,
@@ -334,60 +336,91 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
         peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
                                        x10 - x2[0], x11 - x2[1], fbond);
     }
-  }
-  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+  } kernel{atom->x[0],
+           atom->f[0],
+           atom->nlocal,
+           force->newton_bond,
+           lcache.r0.data(),
+           lcache.k.data(),
+           current_length.data(),
+           theta_over_m,
+           inv_m,
+           constants.data()};
+  const PieceView pc = pieces();
+  for_each_intact_bond<NO_BREAK, ONE_TYPE>(pc, 0, pc.npieces, kernel);
+  if (kernel.current >= 0)
+    peridem_lmp::add_force(kernel.f, kernel.current, kernel.fsum[0], kernel.fsum[1],
+                           kernel.fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
    pass (3) one bond at a time, with energy and virial and either break order
 ------------------------------------------------------------------------- */
 
-void BondPeridemLPS::force_pass_one_by_one(int eflag)
+template <bool ONE_TYPE> void BondPeridemLPS::force_pass_one_by_one(int eflag)
 {
-  int **bondlist = neighbor->bondlist;
-  const int nbondlist = neighbor->nbondlist;
-  const int nlocal = atom->nlocal;
-  const int newton_bond = force->newton_bond;
-  const double *x = atom->x[0];
-  double *f = atom->f[0];
-  const double *r0c = lcache.r0.data(), *kc = lcache.k.data();
-  const double *len = current_length.data();
-
-  // volumetric energy density needs theta on ghosts too: theta = (theta/m)/(1/m)
-  auto theta_of = [&](int i) {
-    return i < nlocal ? theta[i] : (inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0);
-  };
-
-  const peridem::LpsConstants *lc = constants.data();
-  // forces on i1 summed in plain locals while i1 repeats (lmp_peridem_bond_loop.h)
-  int current = -1;
-  double fsum[3] = {0.0, 0.0, 0.0};
-  double ebond = 0.0;
-  for (int n = 0; n < nbondlist; n++) {
-    const int type = bondlist[n][2];
-    if (type <= 0) continue;
-    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
-    const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-    const double delx = x1[0] - x2[0], dely = x1[1] - x2[1], delz = x1[2] - x2[2];
-    const double r = len[n];
-    const double e = r - r0c[n];
-    const double F = peridem::lps_bond_force(lc[type], kc[n], r0c[n], e, theta_over_m[i1],
-                                             theta_over_m[i2], inv_m[i1], inv_m[i2]);
-    // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
-    const double fbond = r > 0.0 ? -F / r : 0.0;
-    peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
-                                delz, fbond);
-    if (evflag) {
-      if (eflag)
-        ebond = peridem::lps_bond_energy(lc[type], kc[n], r0c[n], e, theta_of(i1), theta_of(i2),
-                                         inv_m[i1], inv_m[i2]);
-      ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+  struct OneByOne {
+    BondPeridemLPS *self;
+    const double *x;
+    double *f;
+    int nlocal, newton_bond, eflag;
+    const double *r0c, *kc, *len, *theta, *theta_over_m, *inv_m;
+    const peridem::LpsConstants *lc;
+    double delx = 0.0, dely = 0.0, delz = 0.0, r = 0.0, e = 0.0, ebond = 0.0;
+    // forces on i1 summed in plain locals while i1 repeats (lmp_peridem_bond_loop.h)
+    int current = -1;
+    double fsum[3] = {0.0, 0.0, 0.0};
+    // volumetric energy density needs theta on ghosts too: theta = (theta/m)/(1/m)
+    double theta_of(int i) const
+    {
+      return i < nlocal ? theta[i] : (inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0);
     }
-    if (break_after_force && break_flag &&
-        peridem::bond_breaks(e / r0c[n], s0_break[type], breakage))
-      break_bond(n, i1, i2, r0c[n], s0[type]);
-  }
-  if (current >= 0) peridem_lmp::add_force(f, current, fsum[0], fsum[1], fsum[2]);
+    void piece(int) {}
+    void measure(int n, int i1, int i2)
+    {
+      const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+      delx = x1[0] - x2[0];
+      dely = x1[1] - x2[1];
+      delz = x1[2] - x2[2];
+      r = len[n];
+      e = r - r0c[n];
+    }
+    double stretch(int n) const { return e / r0c[n]; }
+    double r0(int n) const { return r0c[n]; }
+    void bond(int n, int i1, int i2, int type)
+    {
+      const double F = peridem::lps_bond_force(lc[type], kc[n], r0c[n], e, theta_over_m[i1],
+                                               theta_over_m[i2], inv_m[i1], inv_m[i2]);
+      // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
+      const double fbond = r > 0.0 ? -F / r : 0.0;
+      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
+                                  delz, fbond);
+      if (self->evflag) {
+        if (eflag)
+          ebond = peridem::lps_bond_energy(lc[type], kc[n], r0c[n], e, theta_of(i1), theta_of(i2),
+                                           inv_m[i1], inv_m[i2]);
+        self->ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+      }
+    }
+  } kernel{this,
+           atom->x[0],
+           atom->f[0],
+           atom->nlocal,
+           force->newton_bond,
+           eflag,
+           lcache.r0.data(),
+           lcache.k.data(),
+           current_length.data(),
+           theta,
+           theta_over_m,
+           inv_m,
+           constants.data()};
+  // the bonds that break now broke in pass (1), unless the order is after_force: then here
+  const PieceView pc = pieces();
+  for_each_intact_bond<BREAK_AFTER_FORCE, ONE_TYPE>(pc, 0, pc.npieces, kernel);
+  if (kernel.current >= 0)
+    peridem_lmp::add_force(kernel.f, kernel.current, kernel.fsum[0], kernel.fsum[1],
+                           kernel.fsum[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -395,21 +428,14 @@ void BondPeridemLPS::force_pass_one_by_one(int eflag)
    keywords
 ------------------------------------------------------------------------- */
 
-void BondPeridemLPS::settings(int narg, char **arg)
+bool BondPeridemLPS::settings_keyword(int iarg, int narg, char **arg)
 {
-  std::vector<char *> rest;
-  for (int iarg = 0; iarg < narg; iarg += 2) {
-    if (strcmp(arg[iarg], "plane") == 0) {
-      if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword plane needs a value", STYLE);
-      plane = peridem::LpsPlane(
-          peridem_lmp::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
-      plane_given = true;
-      continue;
-    }
-    rest.push_back(arg[iarg]);
-    if (iarg + 1 < narg) rest.push_back(arg[iarg + 1]);
-  }
-  BondPeridem::settings(int(rest.size()), rest.data());
+  if (strcmp(arg[iarg], "plane") != 0) return false;
+  if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword plane needs a value", STYLE);
+  plane = peridem::LpsPlane(
+      peridem_lmp::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
+  plane_given = true;
+  return true;
 }
 
 std::string BondPeridemLPS::plane_description() const
@@ -424,21 +450,48 @@ std::string BondPeridemLPS::plane_description() const
    bond_coeff N material FILE NAME [horizon eps] [influence w] [spacing h] [break yes|no]
 ------------------------------------------------------------------------- */
 
+bool BondPeridemLPS::coeff_keyword(const std::string &key, const char *value, const char *style)
+{
+  ModelArgs &m = margs;
+  if (key == "K") {
+    m.K = coeff_positive("K (bulk modulus)", value, style);
+    m.haveK = true;
+  } else if (key == "G") {
+    m.G = coeff_positive("G (shear modulus)", value, style);
+    m.haveG = true;
+  } else if (key == "influence") {
+    m.influence = value;
+    m.haveInfluence = true;
+  } else if (key == "c") {
+    coeff_positive("c (spring constant)", value, style);
+    m.haveC = true;
+  } else if (key == "E") {
+    coeff_positive("E (Young's modulus)", value, style);
+    m.haveE = true;
+  } else if (key == "micromodulus") {
+    peridem_lmp::parse_micromodulus(lmp, COEFF, value);
+    m.haveMicro = true;
+  } else
+    return false;
+  return true;
+}
+
 void BondPeridemLPS::coeff(int narg, char **arg)
 {
+  margs = ModelArgs();
   CoeffArgs a = parse_coeff(narg, arg, STYLE);
-  allocate_lps();
-  if (a.haveC || a.haveE || a.haveMicro)
+  const ModelArgs &m = margs;
+  if (m.haveC || m.haveE || m.haveMicro)
     error->all(FLERR,
                "{}: {} is a bond-based coefficient; {} is state-based and takes K, G, Gc or s0, "
                "horizon and influence (use bond_style peridem for {})",
-               COEFF, a.haveC ? "c" : (a.haveE ? "E" : "micromodulus"), STYLE,
-               a.haveC ? "c" : (a.haveE ? "E" : "micromodulus"));
-  if (a.haveMaterial && (a.haveK || a.haveG || a.haveGc || a.haveS0))
+               COEFF, m.haveC ? "c" : (m.haveE ? "E" : "micromodulus"), STYLE,
+               m.haveC ? "c" : (m.haveE ? "E" : "micromodulus"));
+  if (a.haveMaterial && (m.haveK || m.haveG || a.haveGc || a.haveS0))
     error->all(FLERR, "{}: {} takes material FILE NAME or K, G and Gc (or s0), not both", COEFF,
                STYLE);
 
-  double K = a.K, G = a.G, s0val = 0.0, eps = a.eps;
+  double K = m.K, G = m.G, s0val = 0.0, eps = a.eps;
   int infl = 0; // the paper's 1 - r/eps
   if (a.haveMaterial) {
     const peridem::Material &mat = a.material;
@@ -456,15 +509,15 @@ void BondPeridemLPS::coeff(int narg, char **arg)
     a.Gc = mat.G_c;
     a.haveGc = true;
   } else {
-    if (!a.haveK) error->all(FLERR, "{}: {} needs K (bulk modulus)", COEFF, STYLE);
-    if (!a.haveG) error->all(FLERR, "{}: {} needs G (shear modulus)", COEFF, STYLE);
+    if (!m.haveK) error->all(FLERR, "{}: {} needs K (bulk modulus)", COEFF, STYLE);
+    if (!m.haveG) error->all(FLERR, "{}: {} needs G (shear modulus)", COEFF, STYLE);
     if (!(eps > 0.0)) error->all(FLERR, "{}: {} needs a horizon", COEFF, STYLE);
     if (a.haveGc == a.haveS0)
       error->all(FLERR, "{}: {} needs Gc (fracture energy, PeriDEM eq. 10) or s0, one of them",
                  COEFF, STYLE);
   }
-  if (a.haveInfluence)
-    infl = peridem_lmp::choice(lmp, COEFF, "influence", a.influence,
+  if (m.haveInfluence)
+    infl = peridem_lmp::choice(lmp, COEFF, "influence", m.influence,
                                {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
   try {
     // Jha et al. 2021, eq. 10 (Zhu & Zhao's 3D LPS value; used in 2D too, as the paper does)
@@ -474,12 +527,7 @@ void BondPeridemLPS::coeff(int narg, char **arg)
     error->all(FLERR, "{}: {}", COEFF, e.what());
   }
   for (int i = a.ilo; i <= a.ihi; i++) {
-    TypeParams p;
-    p.s0 = s0val;
-    p.horizon = eps;
-    p.spacing = a.h;
-    p.breakable = a.breakable;
-    set_type(i, p);
+    set_shared_type(i, s0val, eps, a.h, a.breakable);
     bulk[i] = K;
     shear[i] = G;
     influence[i] = infl;
@@ -496,7 +544,7 @@ void BondPeridemLPS::coeff(int narg, char **arg)
 
 void BondPeridemLPS::init_style()
 {
-  BondPeridem::init_style();
+  BondPeridemBase::init_style();
   const int dimension = domain->dimension;
   // checked here, not in settings(): bond_style may come before the dimension command
   if (dimension == 3 && plane_given && plane != peridem::LpsPlane::ThreeD)
@@ -518,11 +566,10 @@ void BondPeridemLPS::init_style()
 void BondPeridemLPS::write_restart(FILE *fp)
 {
   peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_BOND_PERIDEM_LPS);
-  write_restart_settings(fp); // see BondPeridem::write_restart
-  const int n = atom->nbondtypes;
-  for (double *arr : {bulk, shear, s0, horizon, spacing}) fwrite(&arr[1], sizeof(double), n, fp);
-  fwrite(&influence[1], sizeof(int), n, fp);
-  fwrite(&breakable[1], sizeof(int), n, fp);
+  write_restart_settings(fp); // LAMMPS calls it only under bond_style hybrid
+  for (double *arr : {bulk, shear, s0, horizon, spacing}) write_types(fp, arr);
+  write_types(fp, influence);
+  write_types(fp, breakable);
 }
 
 void BondPeridemLPS::read_restart(FILE *fp)
@@ -530,16 +577,10 @@ void BondPeridemLPS::read_restart(FILE *fp)
   peridem_lmp::check_restart_tag(lmp, fp, peridem_lmp::RESTART_BOND_PERIDEM_LPS,
                                  "bond_style peridem/lps");
   read_restart_settings(fp);
-  allocate_lps();
+  if (!allocated) allocate();
   const int n = atom->nbondtypes;
-  for (double *arr : {bulk, shear, s0, horizon, spacing}) {
-    if (comm->me == 0) utils::sfread(FLERR, &arr[1], sizeof(double), n, fp, nullptr, error);
-    MPI_Bcast(&arr[1], n, MPI_DOUBLE, 0, world);
-  }
-  for (int *arr : {influence, breakable}) {
-    if (comm->me == 0) utils::sfread(FLERR, &arr[1], sizeof(int), n, fp, nullptr, error);
-    MPI_Bcast(&arr[1], n, MPI_INT, 0, world);
-  }
+  for (double *arr : {bulk, shear, s0, horizon, spacing}) read_types(fp, arr);
+  for (int *arr : {influence, breakable}) read_types(fp, arr);
   const char *style = "bond_style peridem/lps";
   constexpr double big = std::numeric_limits<double>::max();
   peridem_lmp::check_restart_values(lmp, style, "bulk modulus", &bulk[1], n, 1e-300, big);
@@ -555,14 +596,14 @@ void BondPeridemLPS::read_restart(FILE *fp)
 
 void BondPeridemLPS::write_restart_settings(FILE *fp)
 {
-  BondPeridem::write_restart_settings(fp);
+  BondPeridemBase::write_restart_settings(fp);
   const int p = int(plane);
   fwrite(&p, sizeof(int), 1, fp);
 }
 
 void BondPeridemLPS::read_restart_settings(FILE *fp)
 {
-  BondPeridem::read_restart_settings(fp);
+  BondPeridemBase::read_restart_settings(fp);
   int p = 0;
   if (comm->me == 0) utils::sfread(FLERR, &p, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&p, 1, MPI_INT, 0, world);
@@ -573,11 +614,10 @@ void BondPeridemLPS::read_restart_settings(FILE *fp)
 void BondPeridemLPS::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nbondtypes; i++) {
-    std::string line =
+    const std::string line =
         fmt::format("{} K {:.17g} G {:.17g} s0 {:.17g} horizon {:.17g} influence {}", i, bulk[i],
-                    shear[i], s0[i], horizon[i], INFLUENCE[influence[i]]);
-    if (spacing[i] > 0.0) line += fmt::format(" spacing {:.17g}", spacing[i]);
-    if (!breakable[i]) line += " break no";
+                    shear[i], s0[i], horizon[i], INFLUENCE[influence[i]]) +
+        data_tail(i);
     fprintf(fp, "%s\n", line.c_str());
   }
 }
@@ -615,18 +655,61 @@ void *BondPeridemLPS::extract(const char *str, int &dim)
   dim = 1;
   if (strcmp(str, "K") == 0) return (void *)bulk;
   if (strcmp(str, "G") == 0) return (void *)shear;
-  if (strcmp(str, "s0") == 0) return (void *)s0;
-  if (strcmp(str, "horizon") == 0) return (void *)horizon;
-  dim = 0;
-  return nullptr;
+  return BondPeridemBase::extract(str, dim);
 }
 
 double BondPeridemLPS::memory_usage()
 {
-  return Bond::memory_usage() +
+  return BondPeridemBase::memory_usage() +
          (lcache.r0.capacity() + lcache.k.capacity() + lcache.wi.capacity() +
           lcache.wj.capacity()) *
              sizeof(double) +
-         pieces_memory() + current_length.capacity() * sizeof(double) +
-         4.0 * nmax_lps * sizeof(double);
+         current_length.capacity() * sizeof(double) + 4.0 * nmax_lps * sizeof(double);
+}
+
+/* ----------------------------------------------------------------------
+   LPS: k_n = (a d^2 + b) omega beta V_i V_j (1/m_i + 1/m_j), the bound of
+   lps_spring_constant() (peridem_lps_law.h). m is summed here over the
+   intact bonds of the bond list (owned and ghost ends): a node whose bonds
+   are partly stored on another rank gets a smaller m, hence a stiffer,
+   still bounding spring; after breakage the force uses the reference m,
+   which is larger than the intact sum, so the bound holds too. The stored
+   m of fix peridem/bonds is not used: the estimate is made in the pair
+   style's setup, before the first bond computation of the first run has
+   summed it, and it is kept for owned nodes only (ghosts would need a
+   communication). On one rank, before breakage and without bonds across a
+   periodic boundary, both are the same sum to round-off, so the bisected
+   case of timestep_estimate_vs_threshold_bed would not move.
+------------------------------------------------------------------------- */
+
+void BondPeridemLPS::stability_springs(std::vector<double> &k)
+{
+  int **bondlist = neighbor->bondlist;
+  const int nbondlist = neighbor->nbondlist;
+  const int nall = atom->nlocal + atom->nghost;
+  const double *vfrac = atom->vfrac;
+  k.assign(nbondlist, 0.0);
+  std::vector<double> r0(nbondlist, 0.0), wb(nbondlist, 0.0), m(nall, 0.0);
+  for (int n = 0; n < nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0) continue;
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    r0[n] = reference_length(i1, i2);
+    const double w =
+        peridem::influence_value(peridem::Influence(influence[type]), r0[n], horizon[type]);
+    const double beta = volume_correction
+                            ? peridem::volume_factor(peridem::VolumeCorrection::PeriDEM, r0[n],
+                                                     horizon[type], spacing[type])
+                            : 1.0;
+    wb[n] = w * beta;
+    m[i1] += wb[n] * r0[n] * r0[n] * vfrac[i2];
+    m[i2] += wb[n] * r0[n] * r0[n] * vfrac[i1];
+  }
+  for (int n = 0; n < nbondlist; n++) {
+    const int type = bondlist[n][2];
+    if (type <= 0 || !(wb[n] > 0.0)) continue;
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1];
+    k[n] = peridem::lps_spring_constant(constants[type]) * wb[n] * vfrac[i1] * vfrac[i2] *
+           (1.0 / m[i1] + 1.0 / m[i2]);
+  }
 }

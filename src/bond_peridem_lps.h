@@ -21,20 +21,21 @@ BondStyle(peridem/lps,BondPeridemLPS);
 #ifndef LMP_BOND_PERIDEM_LPS_H
 #define LMP_BOND_PERIDEM_LPS_H
 
-#include "bond_peridem.h"
-#include "peridem_lps_law.h"
+#include "bond_peridem_base.h"
 
-#include <string>
+namespace peridem {
+struct LpsConstants;
+enum class LpsPlane;
+} // namespace peridem
 
 namespace LAMMPS_NS {
 
-class BondPeridemLPS : public BondPeridem {
+class BondPeridemLPS : public BondPeridemBase {
  public:
   BondPeridemLPS(class LAMMPS *);
   ~BondPeridemLPS() override;
 
   void compute(int, int) override;
-  void settings(int, char **) override;
   void coeff(int, char **) override;
   void init_style() override;
   void write_restart(FILE *) override;
@@ -51,9 +52,22 @@ class BondPeridemLPS : public BondPeridem {
   const double *dilation() const { return theta; }
 
  protected:
-  // per bond type, 1..nbondtypes (s0, horizon, spacing, breakable: the base class's arrays)
+  // per bond type, 1..nbondtypes (s0, horizon, spacing, breakable: the base's)
   double *bulk, *shear;
   int *influence;
+  void allocate_model(int np1) override;
+
+  // the model's keywords of one bond_coeff command (coeff_keyword())
+  struct ModelArgs {
+    double K = 0.0, G = 0.0;
+    bool haveK = false, haveG = false, haveInfluence = false;
+    std::string influence;
+    // bond_style peridem's keywords, refused with a pointer to that style
+    bool haveC = false, haveE = false, haveMicro = false;
+  };
+  ModelArgs margs;
+  bool coeff_keyword(const std::string &key, const char *value, const char *style) override;
+  bool settings_keyword(int iarg, int narg, char **arg) override;
   std::vector<peridem::LpsConstants> constants;
   peridem::LpsPlane plane;
   bool plane_given = false; // plane strain|stress given (a 3d simulation refuses them)
@@ -69,11 +83,10 @@ class BondPeridemLPS : public BondPeridem {
     std::vector<double> k;  // omega beta V_i V_j
     std::vector<double> wi; // omega beta r0 V_j: weight of the extension in theta_i
     std::vector<double> wj; // omega beta r0 V_i
-    std::size_t size() const { return r0.size(); }
   };
   LpsCache lcache;
   std::vector<double> current_length; // |y| of each bond, from the dilation pass
-  void fill_lps_cache();
+  void fill_cache() override;
 
   // per atom (nmax): sum of the dilation pass, theta/m, 1/m, theta
   double *sum, *theta_over_m, *inv_m, *theta;
@@ -82,13 +95,12 @@ class BondPeridemLPS : public BondPeridem {
   void grow_lps();
   void compute_weighted_volume();
 
-  void allocate_lps();
-
-  // the passes of compute(): (1) the dilation sums, for 2d and 3d; (3) the forces, for 2d
-  // and 3d on most steps, one bond at a time with energy, virial or break_order after_force
+  // the passes of compute(), each on the base's traversal of the intact bonds: (1) the
+  // dilation sums, for 2d and 3d; (3) the forces, for 2d and 3d on most steps, one bond at a
+  // time with energy, virial or break_order after_force
   template <int DIM, bool ONE_TYPE> void dilation_pass();
   template <int DIM, bool ONE_TYPE> void force_pass();
-  void force_pass_one_by_one(int eflag);
+  template <bool ONE_TYPE> void force_pass_one_by_one(int eflag);
 };
 
 } // namespace LAMMPS_NS

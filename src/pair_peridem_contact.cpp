@@ -23,7 +23,7 @@
 #include "pair_peridem_contact.h"
 #include "lmp_peridem_citations.h"
 
-#include "bond_peridem.h"
+#include "bond_peridem_base.h"
 #include "fix_peridem_vhistory.h"
 
 #include "atom.h"
@@ -773,8 +773,8 @@ void PairPeridemContact::report_time_step()
   MPI_Allreduce(mine.data(), all.data(), (int)mine.size(), MPI_DOUBLE, MPI_MIN, world);
   if (atom->natoms == 0) return;
 
-  // the bonds' part of the bound (BondPeridem::stability_omega2_of_types)
-  auto *bonds = dynamic_cast<BondPeridem *>(force->bond);
+  // the bonds' part of the bound (BondPeridemBase::stability_omega2_of_types)
+  auto *bonds = dynamic_cast<BondPeridemBase *>(force->bond);
   const std::vector<double> bond_omega2 =
       bonds ? bonds->stability_omega2_of_types() : std::vector<double>(nt + 1, 0.0);
   const std::vector<std::array<double, 2>> wall_laws = own_wall_laws();

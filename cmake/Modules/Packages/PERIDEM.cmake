@@ -38,7 +38,9 @@ set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -We
 # (tested: ChunkedLoopEqualsOneByOne). The stand-alone build (cmake/PeridemLAMMPS.cmake,
 # -O3) sets the same flags. This file only, so that LAMMPS's own files keep LAMMPS's flags.
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
-  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp APPEND PROPERTY COMPILE_OPTIONS
+  # bond_peridem_base.cpp: the break path and reference lengths the bond loops share
+  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp
+    ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_base.cpp APPEND PROPERTY COMPILE_OPTIONS
     -fno-math-errno -ftree-vectorize -ffp-contract=off)
   # bond_peridem_lps.cpp's fast force pass must give its one-by-one pass's bits too
   set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_lps.cpp APPEND PROPERTY
