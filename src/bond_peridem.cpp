@@ -120,12 +120,9 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
 
   // pass (c) on the base's traversal: entry n is j = n - n0 of the chunk's arrays
   struct Forces {
-    double *f;
-    int nlocal, newton_bond;
+    peridem_lmp::BondForces out;
     const double *dx, *dy, *dz, *rv, *sv, *fb, *r0c;
     int n0 = 0, j = 0;
-    int current = -1;
-    double fsum[3] = {0.0, 0.0, 0.0};
     void piece(int) {}
     void measure(int n, int, int) { j = n - n0; }
     double stretch(int) const { return sv[j]; }
@@ -134,13 +131,11 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
     {
       const double fbond = rv[j] > 0.0 ? fb[j] : 0.0;
       if (DIM == 3)
-        peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
-                                    dy[j], dz[j], fbond);
+        out.add(i1, i2, dx[j], dy[j], dz[j], fbond);
       else
-        peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, dx[j],
-                                       dy[j], fbond);
+        out.add_2d(i1, i2, dx[j], dy[j], fbond);
     }
-  } out{atom->f[0], atom->nlocal, force->newton_bond, dx, dy, dz, rv, sv, fb, cache.r0.data()};
+  } kernel{{atom->f[0], atom->nlocal, force->newton_bond}, dx, dy, dz, rv, sv, fb, cache.r0.data()};
 
   for (int c = 0; c < pc.nchunks; c++) {
     const int p0 = pc.chunk[c], p1 = pc.chunk[c + 1];
@@ -171,11 +166,10 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
       fb[j] = -peridem::bond_force_per_length(UNIFORM_K ? k_all : kk[j], ir[j], 1.0 / r);
     }
     // (c) breakage and forces in list order
-    out.n0 = n0;
-    for_each_intact_bond<BREAK_BEFORE_FORCE, ONE_TYPE>(pc, p0, p1, out);
+    kernel.n0 = n0;
+    for_each_intact_bond<BREAK_BEFORE_FORCE, ONE_TYPE>(pc, p0, p1, kernel);
   }
-  if (out.current >= 0)
-    peridem_lmp::add_force(out.f, out.current, out.fsum[0], out.fsum[1], out.fsum[2]);
+  kernel.out.finish();
 }
 
 // built three times, for AVX-512, AVX2 and the baseline x86-64 (SSE2), chosen when the
@@ -210,25 +204,19 @@ void BondPeridem::compute_chunked()
 template <bool ONE_TYPE> void BondPeridem::compute_one_by_one(int eflag)
 {
   struct OneByOne {
+    peridem_lmp::BondForces out;
     BondPeridem *self;
     const double *x;
-    double *f;
-    int nlocal, newton_bond, eflag;
+    int eflag;
     const double *r0c, *inv_r0, *kb;
     bool k_uniform;
     double k_value;
-    double delx = 0.0, dely = 0.0, delz = 0.0, r = 0.0, s = 0.0, ebond = 0.0;
-    // forces on i1 summed in registers (lmp_peridem_bond_loop.h)
-    int current = -1;
-    double fsum[3] = {0.0, 0.0, 0.0};
+    double del[3] = {0.0, 0.0, 0.0}, r = 0.0, s = 0.0, ebond = 0.0;
     void piece(int) {}
     void measure(int n, int i1, int i2)
     {
-      const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-      delx = x1[0] - x2[0];
-      dely = x1[1] - x2[1];
-      delz = x1[2] - x2[2];
-      r = std::sqrt(delx * delx + dely * dely + delz * delz);
+      peridem_lmp::separation(x, i1, i2, del);
+      r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
       s = peridem::stretch_from_inverse(r, inv_r0[n]);
     }
     double stretch(int) const { return s; }
@@ -240,22 +228,26 @@ template <bool ONE_TYPE> void BondPeridem::compute_one_by_one(int eflag)
       // LAMMPS's fbond multiplies x1 - x2
       const double k = k_uniform ? k_value : kb[n];
       const double fbond = r > 0.0 ? -peridem::bond_force_per_length(k, inv_r0[n], 1.0 / r) : 0.0;
-      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
-                                  delz, fbond);
+      out.add(i1, i2, del[0], del[1], del[2], fbond);
       if (eflag) ebond = peridem::bond_energy(k, 1.0, s, r0c[n], 1.0, 1.0);
-      if (self->evflag) self->ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+      if (self->evflag)
+        self->ev_tally(i1, i2, out.nlocal, out.newton_bond, ebond, fbond, del[0], del[1], del[2]);
     }
-  } kernel{this,         atom->x[0],      atom->f[0],          atom->nlocal,   force->newton_bond,
-           eflag,        cache.r0.data(), cache.inv_r0.data(), cache.k.data(), cache.k_uniform,
+  } kernel{{atom->f[0], atom->nlocal, force->newton_bond},
+           this,
+           atom->x[0],
+           eflag,
+           cache.r0.data(),
+           cache.inv_r0.data(),
+           cache.k.data(),
+           cache.k_uniform,
            cache.k_value};
 
   // a bond that breaks now carries no force now, unless the user asked for the order of
   // LAMMPS's peri styles: force first, then break
   const PieceView pc = pieces();
   for_each_intact_bond<BREAK_EITHER, ONE_TYPE>(pc, 0, pc.npieces, kernel);
-  if (kernel.current >= 0)
-    peridem_lmp::add_force(kernel.f, kernel.current, kernel.fsum[0], kernel.fsum[1],
-                           kernel.fsum[2]);
+  kernel.out.finish();
 }
 
 /* ----------------------------------------------------------------------

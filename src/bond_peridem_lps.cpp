@@ -304,14 +304,10 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
 {
   if (neighbor->nbondlist == 0) return; // the bond list may not exist yet on this rank
   struct Forces {
-    const double *x;
-    double *f;
-    int nlocal, newton_bond;
-    const double *r0c, *kc, *len, *theta_over_m, *inv_m;
+    peridem_lmp::BondForces out;
+    const double *x, *r0c, *kc, *len, *theta_over_m, *inv_m;
     const peridem::LpsConstants *lc;
     double x10 = 0.0, x11 = 0.0, x12 = 0.0, tm1 = 0.0, im1 = 0.0;
-    int current = -1;
-    double fsum[3] = {0.0, 0.0, 0.0};
     void piece(int i1)
     {
       const double *x1 = x + 3 * i1;
@@ -330,16 +326,12 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
                                                theta_over_m[i2], im1, inv_m[i2]);
       const double fbond = r > 0.0 ? -F / r : 0.0;
       if (DIM == 3)
-        peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
-                                    x10 - x2[0], x11 - x2[1], x12 - x2[2], fbond);
+        out.add(i1, i2, x10 - x2[0], x11 - x2[1], x12 - x2[2], fbond);
       else
-        peridem_lmp::add_bond_force_2d(f, current, fsum, i1, i2, newton_bond || i2 < nlocal,
-                                       x10 - x2[0], x11 - x2[1], fbond);
+        out.add_2d(i1, i2, x10 - x2[0], x11 - x2[1], fbond);
     }
-  } kernel{atom->x[0],
-           atom->f[0],
-           atom->nlocal,
-           force->newton_bond,
+  } kernel{{atom->f[0], atom->nlocal, force->newton_bond},
+           atom->x[0],
            lcache.r0.data(),
            lcache.k.data(),
            current_length.data(),
@@ -348,9 +340,7 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
            constants.data()};
   const PieceView pc = pieces();
   for_each_intact_bond<NO_BREAK, ONE_TYPE>(pc, 0, pc.npieces, kernel);
-  if (kernel.current >= 0)
-    peridem_lmp::add_force(kernel.f, kernel.current, kernel.fsum[0], kernel.fsum[1],
-                           kernel.fsum[2]);
+  kernel.out.finish();
 }
 
 /* ----------------------------------------------------------------------
@@ -360,28 +350,22 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
 template <bool ONE_TYPE> void BondPeridemLPS::force_pass_one_by_one(int eflag)
 {
   struct OneByOne {
+    peridem_lmp::BondForces out;
     BondPeridemLPS *self;
     const double *x;
-    double *f;
-    int nlocal, newton_bond, eflag;
+    int eflag;
     const double *r0c, *kc, *len, *theta, *theta_over_m, *inv_m;
     const peridem::LpsConstants *lc;
-    double delx = 0.0, dely = 0.0, delz = 0.0, r = 0.0, e = 0.0, ebond = 0.0;
-    // forces on i1 summed in plain locals while i1 repeats (lmp_peridem_bond_loop.h)
-    int current = -1;
-    double fsum[3] = {0.0, 0.0, 0.0};
+    double del[3] = {0.0, 0.0, 0.0}, r = 0.0, e = 0.0, ebond = 0.0;
     // volumetric energy density needs theta on ghosts too: theta = (theta/m)/(1/m)
     double theta_of(int i) const
     {
-      return i < nlocal ? theta[i] : (inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0);
+      return i < out.nlocal ? theta[i] : (inv_m[i] > 0.0 ? theta_over_m[i] / inv_m[i] : 0.0);
     }
     void piece(int) {}
     void measure(int n, int i1, int i2)
     {
-      const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
-      delx = x1[0] - x2[0];
-      dely = x1[1] - x2[1];
-      delz = x1[2] - x2[2];
+      peridem_lmp::separation(x, i1, i2, del);
       r = len[n];
       e = r - r0c[n];
     }
@@ -393,20 +377,17 @@ template <bool ONE_TYPE> void BondPeridemLPS::force_pass_one_by_one(int eflag)
                                                theta_over_m[i2], inv_m[i1], inv_m[i2]);
       // a positive F pulls i1 towards i2; LAMMPS's fbond multiplies x1 - x2
       const double fbond = r > 0.0 ? -F / r : 0.0;
-      peridem_lmp::add_bond_force(f, current, fsum, i1, i2, newton_bond || i2 < nlocal, delx, dely,
-                                  delz, fbond);
+      out.add(i1, i2, del[0], del[1], del[2], fbond);
       if (self->evflag) {
         if (eflag)
           ebond = peridem::lps_bond_energy(lc[type], kc[n], r0c[n], e, theta_of(i1), theta_of(i2),
                                            inv_m[i1], inv_m[i2]);
-        self->ev_tally(i1, i2, nlocal, newton_bond, ebond, fbond, delx, dely, delz);
+        self->ev_tally(i1, i2, out.nlocal, out.newton_bond, ebond, fbond, del[0], del[1], del[2]);
       }
     }
-  } kernel{this,
+  } kernel{{atom->f[0], atom->nlocal, force->newton_bond},
+           this,
            atom->x[0],
-           atom->f[0],
-           atom->nlocal,
-           force->newton_bond,
            eflag,
            lcache.r0.data(),
            lcache.k.data(),
@@ -418,9 +399,7 @@ template <bool ONE_TYPE> void BondPeridemLPS::force_pass_one_by_one(int eflag)
   // the bonds that break now broke in pass (1), unless the order is after_force: then here
   const PieceView pc = pieces();
   for_each_intact_bond<BREAK_AFTER_FORCE, ONE_TYPE>(pc, 0, pc.npieces, kernel);
-  if (kernel.current >= 0)
-    peridem_lmp::add_force(kernel.f, kernel.current, kernel.fsum[0], kernel.fsum[1],
-                           kernel.fsum[2]);
+  kernel.out.finish();
 }
 
 /* ----------------------------------------------------------------------

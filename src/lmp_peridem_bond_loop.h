@@ -74,6 +74,37 @@ inline void add_bond_force_2d(double *f, int &current, double *sum, int i1, int 
   }
 }
 
+// x1 - x2 of atoms i1 and i2 (x flat from x[0]) into del
+inline void separation(const double *x, int i1, int i2, double *del)
+{
+  const double *x1 = x + 3 * i1, *x2 = x + 3 * i2;
+  del[0] = x1[0] - x2[0];
+  del[1] = x1[1] - x2[1];
+  del[2] = x1[2] - x2[2];
+}
+
+// The forces of one pass over the bond list, for the kernels of the bond styles' traversal
+// (BondPeridemBase::for_each_intact_bond): a member of the pass's local kernel object, whose
+// address never escapes, so that current and sum stay in registers as plain locals do.
+struct BondForces {
+  double *f; // flat from f[0]
+  int nlocal, newton_bond;
+  int current = -1; // the i1 whose forces are being summed
+  double sum[3] = {0.0, 0.0, 0.0};
+  void add(int i1, int i2, double delx, double dely, double delz, double fbond)
+  {
+    add_bond_force(f, current, sum, i1, i2, newton_bond || i2 < nlocal, delx, dely, delz, fbond);
+  }
+  void add_2d(int i1, int i2, double delx, double dely, double fbond)
+  {
+    add_bond_force_2d(f, current, sum, i1, i2, newton_bond || i2 < nlocal, delx, dely, fbond);
+  }
+  void finish()
+  {
+    if (current >= 0) add_force(f, current, sum[0], sum[1], sum[2]);
+  }
+};
+
 } // namespace peridem_lmp
 
 #endif
