@@ -152,11 +152,12 @@ class BondPeridemBase : public Bond {
   void fill_reference_lengths(std::vector<double> &r0, std::vector<double> *inv_r0) const;
   double reference_length(int i1, int i2) const;
 
-  // The breakage decision, the only one: a bond breaks once its stretch exceeds the critical
-  // stretch of its type (in tension, or either way with break absolute)
+  // The breakage criterion, the only one: a bond breaks once its stretch exceeds the critical
+  // stretch of its type (in tension, or either way with break absolute). Whether bonds break at
+  // all (break off) and in which order is for_each_intact_bond()'s.
   bool breaks_now(double stretch, int type) const
   {
-    return break_flag && peridem::bond_breaks(stretch, s0_break[type], breakage);
+    return peridem::bond_breaks(stretch, s0_break[type], breakage);
   }
   // the only break path: bond n of the list is broken for good, here and in the bond arrays
   void break_bond(int n, int i1, int i2, double r0, int type);
