@@ -116,6 +116,19 @@ void PairPeridemContact::copy_neighbour_pairs()
   pairs_copied = true;
 }
 
+void PairPeridemContact::grain_node_contacts(std::vector<std::array<int, 2>> &out) const
+{
+  out.clear();
+  const double *x = atom->x ? atom->x[0] : nullptr;
+  for (const NodePair &p : pairs) {
+    if (atom->molecule[p.i] == atom->molecule[p.j]) continue;
+    const double *xi = x + 3 * p.i, *xj = x + 3 * p.j;
+    const double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+    const double Rc = spec[atom->type[p.i]][atom->type[p.j]].params.Rc;
+    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < Rc * Rc) out.push_back({p.i, p.j});
+  }
+}
+
 /* ----------------------------------------------------------------------
    the contact law's input for the pair i, j (any two atoms within the
    cutoff); false for nodes of one grain without self-contact. Nodes of one

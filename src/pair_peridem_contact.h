@@ -53,6 +53,10 @@ class PairPeridemContact : public Pair {
   // the contact law of a type pair (after pair_coeff), e.g. for walls
   const peridem_lmp::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
   bool type_set(int i, int j) const { return allocated && setflag[i][j]; }
+  // node pairs i, j of different grains closer than their contact radius R_c, from the
+  // neighbour list of the last force computation (i owned, j owned or ghost), for compute
+  // peridem/contacts
+  void grain_node_contacts(std::vector<std::array<int, 2>> &out) const;
   double memory_usage() override;
 
  protected:

@@ -20,10 +20,12 @@
 #include "bond_peridem.h"
 #include "bond_peridem_lps.h"
 #include "compute_peridem_bed.h"
+#include "compute_peridem_contacts.h"
 #include "compute_peridem_damage.h"
 #include "compute_peridem_dilation.h"
 #include "compute_peridem_fragments.h"
 #include "compute_peridem_grain.h"
+#include "compute_peridem_stress.h"
 #include "create_peridem_bed.h"
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
@@ -86,6 +88,8 @@ void for_each_style(StyleSink &sink)
   sink.compute("peridem/grain", &compute_creator<ComputePeridemGrain>);
   sink.compute("peridem/bed", &compute_creator<ComputePeridemBed>);
   sink.compute("peridem/dilation", &compute_creator<ComputePeridemDilation>);
+  sink.compute("peridem/stress", &compute_creator<ComputePeridemStress>);
+  sink.compute("peridem/contacts", &compute_creator<ComputePeridemContacts>);
   sink.command("create_peridem_grains", &command_creator<CreatePeridemGrains>);
   sink.command("cut_peridem_bonds", &command_creator<CutPeridemBonds>);
   sink.command("create_peridem_bed", &command_creator<CreatePeridemBed>);

@@ -248,3 +248,32 @@ add_test(NAME lps.log_names_plane_3d
   COMMAND ${PERIDEM_RUN}/expect_pass.sh --regex "bond_style peridem/lps type \\*: .*influence conic, 3d$"
           $<TARGET_FILE:lmp_peridem> -in ${_cat}/base.in -log none -echo screen
           -var input_dir ${_fs} -var pre "bond_style peridem/lps" -var pre2 "bond_coeff * K 1e9 G 0.5e9 Gc 1000 horizon 2.0001e-3")
+
+# compute peridem/stress and compute peridem/contacts
+peridem_catalogue_commands(compute_stress_atomic "compute peridem/stress requires per-atom masses"
+  ${_atomic} -var c4 "compute s all peridem/stress volume 1")
+peridem_catalogue_error(compute_stress_no_volume "Illegal compute peridem/stress command: expected volume V, v_name or box"
+  -var bad "compute s all peridem/stress")
+peridem_catalogue_error(compute_stress_value_missing "Illegal compute peridem/stress command: volume needs a value"
+  -var bad "compute s all peridem/stress volume")
+peridem_catalogue_error(compute_stress_unknown_keyword "Illegal compute peridem/stress command: unknown keyword colour"
+  -var bad "compute s all peridem/stress colour 1")
+peridem_catalogue_error(compute_stress_negative_volume "Illegal compute peridem/stress command: volume -1 must be positive"
+  -var bad "compute s all peridem/stress volume -1")
+peridem_catalogue_error(compute_stress_nan_volume "compute peridem/stress: volume must be a finite number, not nan"
+  -var bad "compute s all peridem/stress volume nan")
+peridem_catalogue_error(compute_stress_no_variable "compute peridem/stress: variable nope does not exist"
+  -var bad "compute s all peridem/stress volume v_nope")
+peridem_catalogue_error(compute_stress_atom_variable "compute peridem/stress: variable a is not equal-style"
+  -var pre "variable a atom x" -var bad "compute s all peridem/stress volume v_a")
+peridem_catalogue_error(compute_stress_variable_volume_zero "compute peridem/stress: the volume \\(0\\) must be positive"
+  -var pre "variable V equal 0" -var pre2 "compute s all peridem/stress volume v_V"
+  -var bad "thermo_style custom step c_s[2]")
+peridem_catalogue_error(compute_stress_wall_without_virial "compute peridem/stress: fix w \\(peridem/wall\\) tallies no virial: add 'fix_modify w virial yes'"
+  -var pre "fix w all peridem/wall xlo -5e-3 Kn 1e23 Rc 0.9e-3" -var bad "compute s all peridem/stress volume 1")
+peridem_catalogue_error(compute_contacts_arguments "Illegal compute peridem/contacts command: it takes no arguments after the style"
+  -var bad "compute c all peridem/contacts 1")
+peridem_catalogue_commands(compute_contacts_atomic "compute peridem/contacts requires atom style peridem"
+  ${_atomic} -var c4 "compute c all peridem/contacts")
+peridem_catalogue_error(compute_contacts_no_pair "compute peridem/contacts needs pair_style peridem/contact"
+  -var bad "compute c all peridem/contacts")

@@ -79,3 +79,7 @@ peridem_add_error_test(bed_atom_style ${_in}/fragments/atomic.in
 find_program(PERIDEM_POST_PYTHON python3 PATHS /usr/bin NO_DEFAULT_PATH)
 add_test(NAME python.peridem_post
   COMMAND ${PERIDEM_POST_PYTHON} ${PERIDEM_RUN}/test_post.py)
+
+# compute peridem/stress and peridem/contacts: the gtests on 2 ranks
+add_test(NAME mpi2.compute_peridem_stress
+  COMMAND ${PERIDEM_RUN}/mpirun.sh 2 $<TARGET_FILE:test_compute_peridem_stress>)
