@@ -15,9 +15,10 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 lammps_src_root="${PERIDEM_LAMMPS_SRC_ROOT:-/opt/peridem/lammps-source}"
 
+# python3-scipy: the Delaunay triangulation of examples/plate-hole/make_mesh.py (ctest plate_hole_*)
 packages=(build-essential cmake dpkg-dev lammps liblammps-dev lammps-examples
           libeigen3-dev libopenmpi-dev openmpi-bin libgtest-dev python3-lammps
-          python3-numpy libyaml-dev libgmock-dev)
+          python3-numpy python3-scipy libyaml-dev libgmock-dev)
 
 missing=()
 for p in "${packages[@]}"; do
