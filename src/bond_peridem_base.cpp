@@ -21,6 +21,9 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
+#include "fix_peridem_escapes.h"
+#include "fix_peridem_order.h"
+#include "lmp_peridem_own_fix.h"
 #include "force.h"
 #include "lattice.h"
 #include "memory.h"
@@ -430,18 +433,14 @@ void BondPeridemBase::init_style()
                      "{}: communication cutoff set to {:.8g} (largest horizon x {:.4g} + skin)\n",
                      STYLE, needed, 1.0 + stretch_allowance);
   }
-  // the bookkeeping of broken bonds
-  const int ifix = modify->find_fix(FixPeridemBonds::ID);
-  if (ifix < 0)
-    bonds_fix = dynamic_cast<FixPeridemBonds *>(
-        modify->add_fix(fmt::format("{} all peridem/bonds", FixPeridemBonds::ID)));
-  else
-    bonds_fix = dynamic_cast<FixPeridemBonds *>(modify->fix[ifix]);
-  if (!bonds_fix)
-    error->all(FLERR, "{}: fix {} is not a fix peridem/bonds", STYLE, FixPeridemBonds::ID);
+  // the bookkeeping of broken bonds, nodes that leave the box through a fixed boundary, the
+  // order of the nodes in memory: one fix each, created once
+  bonds_fix = peridem_lmp::own_fix<FixPeridemBonds>(lmp, "peridem/bonds", STYLE);
+  peridem_lmp::own_fix<FixPeridemEscapes>(lmp, "peridem/escapes", STYLE);
+  FixPeridemOrder *order = peridem_lmp::own_fix<FixPeridemOrder>(lmp, "peridem/order", STYLE);
 
-  // Nodes in memory grain by grain, in the order of creation (peridem_atom_order.h: the
-  // 2000-grain bed's bond loop 4.8 -> 3.6 ns per bond), at the frequency of LAMMPS's sort
+  // Nodes in memory grain by grain, in the order of creation (peridem_atom_order.h says why),
+  // at the frequency of LAMMPS's sort
   // (atom_modify sort N, 1000 by default), instead of LAMMPS's spatial sort, which a bin
   // size larger than any box turns into a no-op (Atom::sort() returns with one bin).
   // atom_modify sort 0 0 leaves the atoms as they are; a bin size given by the user
@@ -456,7 +455,7 @@ void BondPeridemBase::init_style()
                      "LAMMPS's spatial sort (atom_modify sort N binsize: that sort instead)\n",
                      STYLE, atom->sortfreq);
   }
-  bonds_fix->set_grain_order(grain_order);
+  order->set_active(grain_order);
   validate_next = 1;
   cache_ncalls = cache_generation = -1;
 }

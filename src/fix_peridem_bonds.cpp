@@ -19,21 +19,17 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_peridem_wall.h"
 #include "force.h"
 #include "lmp_peridem_grains.h"
+#include "lmp_peridem_own_fix.h"
 #include "lmp_peridem_topology.h"
 #include "memory.h"
 #include "modify.h"
-#include "output.h"
 #include "pair.h"
-#include "thermo.h"
-#include "peridem_atom_order.h"
 #include "update.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <vector>
 #include <string>
 
@@ -48,20 +44,11 @@ enum { COUNTS, PARTNERS, SUM };
 
 FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0),
-      escapes_deleted(0), wvolume(nullptr), comm_a(nullptr), comm_b(nullptr)
+      wvolume(nullptr), comm_a(nullptr), comm_b(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "Illegal fix peridem/bonds command: it takes no arguments");
-  // one instance, the bond style's: a second one would count nothing
-  if (std::strcmp(id, ID) != 0)
-    error->all(FLERR,
-               "fix peridem/bonds is created by bond_style peridem (as fix {}); do not define it "
-               "yourself (fix {})",
-               ID, id);
+  peridem_lmp::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
   restart_peratom = 1;
   comm_reverse = 2;
-  scalar_flag = 1; // nodes deleted with their bonds (thermo_modify lost ignore|warn)
-  global_freq = 1;
-  extscalar = 1;
   // LAMMPS 29Sep2021 lists the fixes that may force a rebuild in
   // Neighbor::init(), at the start of each run: declare it now, not at the
   // first break, or the first run that breaks bonds never rebuilds early.
@@ -89,7 +76,7 @@ FixPeridemBonds::~FixPeridemBonds()
 
 int FixPeridemBonds::setmask()
 {
-  return PRE_EXCHANGE | POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_FORCE | POST_FORCE | MIN_PRE_FORCE |
+  return POST_NEIGHBOR | MIN_POST_NEIGHBOR | PRE_FORCE | POST_FORCE | MIN_PRE_FORCE |
          MIN_POST_FORCE;
 }
 
@@ -108,15 +95,6 @@ void FixPeridemBonds::init()
   for (int i = 0; i < atom->nlocal && !any; i++) any = wvolume[i] > 0.0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
   wd_wvolume = any_all;
-  escapes_deleted = 0;
-  for (int f = 0; f < modify->nfix; f++) {
-    auto *wall = dynamic_cast<FixPeridemWall *>(modify->fix[f]);
-    if (wall && wall->deletes_lost()) escapes_deleted = 1;
-  }
-  // thermo_modify lost ignore|warn: the user lets atoms go (as BPM's users do for fragments
-  // that fly off); here they go with their bonds, counted
-  lost_allowed = output->thermo && output->thermo->lostflag != Thermo::ERROR;
-  deleted_run = 0;
   // pair_style peridem/contact takes the nodes of a broken bond into its pair list at once
   // (it holds each pair once with newton_pair on; with newton_bond on, or on one rank, one
   // rank sees each break): no rebuild of the neighbour lists per break. Otherwise LAMMPS
@@ -127,120 +105,6 @@ void FixPeridemBonds::init()
     int dim = 0;
     broken_pair_sink =
         static_cast<std::function<void(int, int)> *>(contact->extract("peridem_broken_pair", dim));
-  }
-}
-
-/* ----------------------------------------------------------------------
-   a node beyond a fixed ('f') box boundary is lost by LAMMPS at this
-   reneighbouring and its partners' bonds then name a missing atom ("Bond
-   atoms missing"): stop with the node and its grain named, unless
-   a fix peridem/wall with 'lost delete' removes such nodes with their bonds
-------------------------------------------------------------------------- */
-
-void FixPeridemBonds::setup_pre_exchange()
-{
-  check_escapes();
-  if (grain_order) order_atoms(); // at every setup, where LAMMPS would sort
-}
-
-void FixPeridemBonds::pre_exchange()
-{
-  check_escapes();
-  if (grain_order && update->ntimestep >= next_order) order_atoms();
-}
-
-void FixPeridemBonds::check_escapes()
-{
-  if (escapes_deleted) return;
-  double **x = atom->x;
-  std::vector<int> doomed;
-  for (int i = 0; i < atom->nlocal; i++) {
-    const int face = peridem_lmp::outside_fixed_boundary(domain, x[i]);
-    if (face < 0) continue;
-    if (lost_allowed) {
-      doomed.push_back(i);
-      continue;
-    }
-    static const char *const faces[] = {"xlo", "xhi", "ylo", "yhi", "zlo", "zhi"};
-    error->one(FLERR,
-               "atom {} of grain {} left the simulation box through {} at ({}, {}, {}) at step "
-               "{}: LAMMPS would lose it and its bonds. Enlarge the box, contain the grains "
-               "(fix peridem/wall), or delete escaping nodes with their bonds (fix peridem/wall "
-               "... lost delete, or thermo_modify lost ignore)",
-               atom->tag[i], atom->molecule[i], faces[face], x[i][0], x[i][1], x[i][2],
-               update->ntimestep);
-  }
-  if (!lost_allowed) return;
-  // every rank takes part (the deletion communicates), with or without nodes of its own
-  const bigint gone =
-      peridem_lmp::delete_nodes(lmp, doomed, [this](int i, tagint) { partner_deleted(i); });
-  deleted_run += gone;
-  deleted_total += gone;
-}
-
-/* ----------------------------------------------------------------------
-   nodes deleted with their bonds since the fix was created (thermo_modify
-   lost ignore|warn); reported at the end of each run
-------------------------------------------------------------------------- */
-
-double FixPeridemBonds::compute_scalar()
-{
-  return static_cast<double>(deleted_total);
-}
-
-void FixPeridemBonds::post_run()
-{
-  if (!lost_allowed || deleted_run == 0 || comm->me != 0) return;
-  if (output->thermo->lostflag == Thermo::WARN)
-    error->warning(FLERR,
-                   "fix {}: {} nodes left the box in this run and were deleted with their bonds "
-                   "(thermo_modify lost warn; {} so far, f_{})",
-                   ID, deleted_run, deleted_total, ID);
-  else
-    utils::logmesg(lmp,
-                   "fix {}: {} nodes left the box in this run and were deleted with their bonds "
-                   "(thermo_modify lost ignore; {} so far, f_{})\n",
-                   ID, deleted_run, deleted_total, ID);
-}
-
-/* ----------------------------------------------------------------------
-   the local nodes in grain-major order (peridem_atom_order.h says why), at
-   the frequency of LAMMPS's sort (atom_modify sort N), which the bond
-   style turned off. Moved as Atom::sort() moves atoms: each cycle of the
-   permutation through a spare slot, with AtomVec::copy(), which also moves
-   the per-atom arrays of fixes. Unlike Atom::sort(), this runs before the
-   exchange, while the ghosts are still there: the spare slot lies after
-   them, and the map of atom IDs is set again for the new positions (a fix
-   called after this one in pre_exchange may look atoms up by ID).
-------------------------------------------------------------------------- */
-
-void FixPeridemBonds::order_atoms()
-{
-  const bigint every = atom->sortfreq;
-  if (every <= 0) return;
-  next_order = (update->ntimestep / every) * every + every;
-  const int nlocal = atom->nlocal;
-  const std::vector<int> perm = peridem::grain_major_permutation(atom->molecule, atom->tag, nlocal);
-  if (perm.empty()) return;
-
-  const int spare = nlocal + atom->nghost;
-  if (spare >= atom->nmax) atom->avec->grow(0);
-  std::vector<int> current(nlocal); // current[k]: the atom (old position) now at position k
-  for (int k = 0; k < nlocal; k++) current[k] = k;
-  for (int i = 0; i < nlocal; i++) {
-    if (current[i] == perm[i]) continue;
-    atom->avec->copy(i, spare, 0);
-    int empty = i;
-    while (perm[empty] != i) {
-      atom->avec->copy(perm[empty], empty, 0);
-      empty = current[empty] = perm[empty];
-    }
-    atom->avec->copy(spare, empty, 0);
-    current[empty] = perm[empty];
-  }
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_clear();
-    atom->map_set();
   }
 }
 

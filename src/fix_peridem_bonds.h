@@ -50,10 +50,6 @@ class FixPeridemBonds : public Fix {
   void post_force(int) override;
   void min_pre_force(int) override;
   void min_post_force(int) override;
-  void setup_pre_exchange() override;
-  void post_run() override;
-  double compute_scalar() override;
-  void pre_exchange() override;
   // LAMMPS rebuilt its neighbour and bond lists: at every setup (also of each snapshot of
   // rerun, which resets neighbor->ncalls to 0 each time), every reneighbouring of a run and
   // of a minimisation. The bond styles refill their per-entry caches when this changes.
@@ -61,9 +57,6 @@ class FixPeridemBonds : public Fix {
   void post_neighbor() override { list_generation++; }
   void min_post_neighbor() override { list_generation++; }
   bigint bond_list_generation() const { return list_generation; }
-  // keep the local nodes in memory grain by grain (order_atoms) at LAMMPS's sort frequency,
-  // instead of LAMMPS's spatial sort (which the bond style then turns off)
-  void set_grain_order(bool on) { grain_order = on; }
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -101,8 +94,8 @@ class FixPeridemBonds : public Fix {
   const double *broken_count() const { return nbroken; }
   const double *broken_z() const { return zbroken; }
 
-  // owned atom i lost an intact bond partner that was deleted (escaped
-  // node, fix peridem/wall lost delete): the bond counts as broken
+  // owned atom i lost an intact bond partner that was deleted (escaped node: fix
+  // peridem/escapes, fix peridem/wall lost delete): the bond counts as broken
   void partner_deleted(int i)
   {
     nbroken[i] += 1.0;
@@ -123,10 +116,7 @@ class FixPeridemBonds : public Fix {
   // indices lost this step; they travel home by reverse communication and
   // leave the special lists there
   std::unordered_map<int, std::vector<tagint>> lost_partners;
-  int comm_mode;             // which reverse communication is under way
-  int escapes_deleted;       // a fix peridem/wall deletes nodes leaving the box
-  bool lost_allowed = false; // thermo_modify lost ignore|warn: delete them here instead
-  bigint deleted_run = 0, deleted_total = 0;
+  int comm_mode; // which reverse communication is under way
   // pair_style peridem/contact's intake of the nodes of broken bonds (init()), or nullptr
   std::function<void(int, int)> *broken_pair_sink = nullptr;
   int wd_wvolume = 0;      // the damage section also carries the LPS weighted volume m
@@ -134,10 +124,6 @@ class FixPeridemBonds : public Fix {
   double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()
 
   void forget_partner(int i, tagint partner);
-  void check_escapes();
-  void order_atoms();
-  bool grain_order = false; // set_grain_order()
-  bigint next_order = 0;    // the step from which pre_exchange() orders the nodes again
   void adopt_data_file_damage();
   void refuse_misnamed_damage();
   void check_damage_per_grain(const double *nb);

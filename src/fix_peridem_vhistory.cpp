@@ -13,6 +13,7 @@
 
 #include "fix_peridem_vhistory.h"
 #include "lmp_peridem_compat.h"
+#include "lmp_peridem_own_fix.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -23,7 +24,6 @@
 #include "update.h"
 
 #include <cmath>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -32,24 +32,14 @@ using namespace FixConst;
 
 FixPeridemVelocityHistory *FixPeridemVelocityHistory::instance(LAMMPS *lmp, const char *caller)
 {
-  Modify *modify = lmp->modify;
-  const int ifix = modify->find_fix(ID);
-  Fix *fix =
-      ifix >= 0 ? modify->fix[ifix] : modify->add_fix(fmt::format("{} all peridem/vhistory", ID));
-  auto *history = dynamic_cast<FixPeridemVelocityHistory *>(fix);
-  if (!history) lmp->error->all(FLERR, "{}: fix {} is not a fix peridem/vhistory", caller, ID);
-  return history;
+  return peridem_lmp::own_fix<FixPeridemVelocityHistory>(lmp, "peridem/vhistory", caller);
 }
 
 FixPeridemVelocityHistory::FixPeridemVelocityHistory(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), vhalf(nullptr), vend(nullptr), known(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "Illegal fix peridem/vhistory command: it takes no arguments");
-  if (std::strcmp(id, ID) != 0)
-    error->all(FLERR,
-               "fix peridem/vhistory is created by pair_style peridem/contact and fix "
-               "peridem/wall (as fix {}); do not define it yourself (fix {})",
-               ID, id);
+  peridem_lmp::check_own_fix(lmp, narg, this, ID,
+                             "pair_style peridem/contact and fix peridem/wall");
   restart_peratom = 1;
   comm_forward = 3;
   maxexchange = NVALUES;

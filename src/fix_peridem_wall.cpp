@@ -19,7 +19,6 @@
 #include "fix_peridem_wall.h"
 #include "fix_peridem_vhistory.h"
 #include "lmp_peridem_citations.h"
-#include "fix_peridem_bonds.h"
 #include "lmp_peridem_topology.h"
 
 #include "lmp_peridem_parse.h"
@@ -780,11 +779,7 @@ void FixPeridemWall::pre_exchange()
     }
     if (gone) doomed.push_back(i);
   }
-  const int ibonds = modify->find_fix(FixPeridemBonds::ID);
-  auto *bonds = ibonds < 0 ? nullptr : dynamic_cast<FixPeridemBonds *>(modify->fix[ibonds]);
-  deleted_total += peridem_lmp::delete_nodes(lmp, doomed, [bonds](int i, tagint) {
-    if (bonds) bonds->partner_deleted(i);
-  });
+  deleted_total += peridem_lmp::delete_nodes_breaking_bonds(lmp, doomed);
 }
 
 void FixPeridemWall::post_run()

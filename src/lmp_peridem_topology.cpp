@@ -17,13 +17,16 @@
 #include "atom.h"
 #include "atom_vec.h"
 #include "domain.h"
+#include "fix_peridem_bonds.h"
 #include "force.h"
 #include "lammps.h"
+#include "modify.h"
 #include "special.h"
 
 #include <algorithm>
 #include <functional>
 #include <mpi.h>
+#include <utility>
 
 using namespace LAMMPS_NS;
 
@@ -117,6 +120,15 @@ bigint delete_nodes(LAMMPS *lmp, std::vector<int> doomed,
     atom->map_set();
   }
   return ngone;
+}
+
+bigint delete_nodes_breaking_bonds(LAMMPS *lmp, std::vector<int> doomed)
+{
+  const int ibonds = lmp->modify->find_fix(FixPeridemBonds::ID);
+  auto *bonds = ibonds < 0 ? nullptr : dynamic_cast<FixPeridemBonds *>(lmp->modify->fix[ibonds]);
+  return delete_nodes(lmp, std::move(doomed), [bonds](int i, tagint) {
+    if (bonds) bonds->partner_deleted(i);
+  });
 }
 
 } // namespace peridem_lmp

@@ -50,6 +50,11 @@ int outside_fixed_boundary(const LAMMPS_NS::Domain *domain, const double *x);
 LAMMPS_NS::bigint delete_nodes(LAMMPS_NS::LAMMPS *lmp, std::vector<int> doomed,
                                const std::function<void(int, LAMMPS_NS::tagint)> &lost_partner);
 
+// delete_nodes(), with each intact bond to a deleted node counted as broken by its partner
+// in fix peridem/bonds (when a bond style has created it): fix peridem/escapes and fix
+// peridem/wall 'lost delete' delete escaping nodes so.
+LAMMPS_NS::bigint delete_nodes_breaking_bonds(LAMMPS_NS::LAMMPS *lmp, std::vector<int> doomed);
+
 } // namespace peridem_lmp
 
 #endif

@@ -30,6 +30,8 @@
 #include "create_peridem_grains.h"
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
+#include "fix_peridem_escapes.h"
+#include "fix_peridem_order.h"
 #include "fix_peridem_vhistory.h"
 #include "fix_peridem_wall.h"
 #include "pair_peridem_contact.h"
@@ -81,6 +83,8 @@ void for_each_style(StyleSink &sink)
   sink.bond("peridem/lps", &bond_creator<BondPeridemLPS>);
   sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
+  sink.fix("peridem/escapes", &fix_creator<FixPeridemEscapes>);
+  sink.fix("peridem/order", &fix_creator<FixPeridemOrder>);
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
   sink.fix("peridem/vhistory", &fix_creator<FixPeridemVelocityHistory>);
   sink.compute("peridem/damage", &compute_creator<ComputePeridemDamage>);

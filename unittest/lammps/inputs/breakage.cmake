@@ -52,7 +52,7 @@ foreach(_np 1 2)
     WORKING_DIRECTORY ${_in}/breakage)
 endforeach()
 # ... and without walls, where the user lets atoms go (thermo_modify lost ignore or warn):
-# deleted with their bonds by fix PERIDEM_BONDS and counted, on 1 and 2 ranks
+# deleted with their bonds by fix PERIDEM_ESCAPES and counted, on 1 and 2 ranks
 foreach(_np 1 2)
   add_test(NAME escaped_nodes_deleted_without_walls_np${_np}
     COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np}
@@ -61,7 +61,7 @@ foreach(_np 1 2)
 endforeach()
 add_test(NAME escaped_nodes_deleted_without_walls_warns
   COMMAND ${PERIDEM_RUN}/expect_pass.sh
-          --regex "WARNING: fix PERIDEM_BONDS: [0-9]+ nodes left the box in this run and were deleted with their bonds \\(thermo_modify lost warn"
+          --regex "WARNING: fix PERIDEM_ESCAPES: [0-9]+ nodes left the box in this run and were deleted with their bonds \\(thermo_modify lost warn"
           $<TARGET_FILE:lmp_peridem> -in escape_no_walls.in -log none -echo none -var lost warn
   WORKING_DIRECTORY ${_in}/breakage)
 add_test(NAME error.escaped_node_named_without_walls

@@ -51,6 +51,18 @@ peridem_catalogue_error(bond_vc_needs_spacing "bond_style peridem: volume_correc
   -var pre "bond_style peridem volume_correction linear" -var bad "bond_coeff * E 1e9 Gc 1000 horizon 2.0001e-3")
 peridem_catalogue_error(bond_fix_not_bonds "bond_style peridem: fix PERIDEM_BONDS is not a fix peridem/bonds"
   -var pre "fix PERIDEM_BONDS all nve")
+peridem_catalogue_error(bond_fix_not_escapes "bond_style peridem: fix PERIDEM_ESCAPES is not a fix peridem/escapes"
+  -var pre "fix PERIDEM_ESCAPES all nve")
+peridem_catalogue_error(bond_fix_not_order "bond_style peridem: fix PERIDEM_ORDER is not a fix peridem/order"
+  -var pre "fix PERIDEM_ORDER all nve")
+peridem_catalogue_error(fix_escapes_args "Illegal fix peridem/escapes command: it takes no arguments"
+  -var bad "fix e all peridem/escapes extra")
+peridem_catalogue_error(fix_escapes_user "fix peridem/escapes is created by bond_style peridem \\(as fix PERIDEM_ESCAPES\\); do not define it yourself \\(fix mine\\)"
+  -var bad "fix mine all peridem/escapes")
+peridem_catalogue_error(fix_order_args "Illegal fix peridem/order command: it takes no arguments"
+  -var bad "fix o all peridem/order extra")
+peridem_catalogue_error(fix_order_user "fix peridem/order is created by bond_style peridem \\(as fix PERIDEM_ORDER\\); do not define it yourself \\(fix mine\\)"
+  -var bad "fix mine all peridem/order")
 peridem_catalogue_error(bond_micromodulus_unknown "bond_coeff: unknown micromodulus 'round' \\(use constant or conic\\)"
   -var bad "bond_coeff 1 E 1e9 Gc 1 horizon 2e-3 micromodulus round")
 peridem_catalogue_error(lps_plane_value "bond_style peridem/lps: keyword plane needs a value"
