@@ -92,16 +92,6 @@ peridem::ContactParams contact_from_fields(const std::vector<double> &v)
   return p;
 }
 
-// peridem::ContactParams as format 1 wrote it (raw bytes of the struct of that time)
-struct ContactParamsV1 {
-  double Kn, Rc;
-  int damping;
-  double r_d, eps_n, C, kappa_eff;
-  bool damp_approach_only;
-  int friction;
-  double mu;
-};
-
 } // namespace
 
 void check_restart_tag(LAMMPS *lmp, FILE *fp, RestartTag tag, const char *style)
@@ -173,22 +163,6 @@ peridem::ContactParams read_contact_params(LAMMPS *lmp, FILE *fp, const char *st
   check_restart_values(lmp, style, "contact friction", &v[8], 1, 0.0, 2.0);
   check_restart_values(lmp, style, "friction coefficient", &v[9], 1, 0.0, big);
   return contact_from_fields(v);
-}
-
-peridem::ContactParams read_contact_params_v1(LAMMPS *lmp, FILE *fp, const char *style)
-{
-  if (sizeof(ContactParamsV1) != 72)
-    lmp->error->all(FLERR,
-                    "{}: restart files of format 1 hold the contact parameters in the memory "
-                    "layout of x86-64 Linux and cannot be read on this platform; go through "
-                    "write_data",
-                    style);
-  ContactParamsV1 raw{};
-  if (lmp->comm->me == 0) utils::sfread(FLERR, &raw, sizeof(raw), 1, fp, nullptr, lmp->error);
-  MPI_Bcast(&raw, sizeof(raw), MPI_BYTE, 0, lmp->world);
-  return contact_from_fields({raw.Kn, raw.Rc, (double)raw.damping, raw.r_d, raw.eps_n, raw.C,
-                              raw.kappa_eff, raw.damp_approach_only ? 1.0 : 0.0,
-                              (double)raw.friction, raw.mu});
 }
 
 } // namespace peridem_lmp

@@ -55,8 +55,7 @@ int read_restart_version(LAMMPS_NS::LAMMPS *lmp, FILE *fp, RestartTag tag, int o
 // Contact parameters in a restart file, field by field (format 2 of pair_style
 // peridem/contact): a field count, then each field as a double, so that a field added to
 // peridem::ContactParams changes the count and the old files are refused by name instead of
-// being misread. Format 1 wrote the struct as raw bytes; read_contact_params_v1 reads
-// that layout (x86-64 and other LP64 ABIs), which was frozen when format 2 came.
+// being misread.
 void write_contact_params(FILE *fp, const peridem::ContactParams &p);
 
 // Restart files are trusted input of LAMMPS; what a PERIDEM style reads from one is checked
@@ -67,7 +66,6 @@ void check_restart_values(LAMMPS_NS::LAMMPS *lmp, const char *style, const char 
 void check_restart_values(LAMMPS_NS::LAMMPS *lmp, const char *style, const char *what,
                           const int *values, int n, int lo, int hi);
 peridem::ContactParams read_contact_params(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
-peridem::ContactParams read_contact_params_v1(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 
 } // namespace peridem_lmp
 

@@ -98,9 +98,8 @@ PairPeridemContact::~PairPeridemContact()
    same, to the bit), without the atoms that have none. The contact list of
    a bed is sparse (bonded pairs are not in it: 0.14 pairs per node in the
    2000-grain bed), and walking LAMMPS's list over every node each step, and
-   then to the other grain's node, took 48 ns per pair there, 23 ns with
-   this copy, made once per build (session 9; prefetching the nodes of the
-   pairs 8 ahead gained another 0-15 %, not kept).
+   then to the other grain's node, took twice as long per pair as this copy,
+   made once per build (bench/README.md).
 ------------------------------------------------------------------------- */
 
 void PairPeridemContact::copy_neighbour_pairs()
@@ -895,10 +894,10 @@ void PairPeridemContact::write_restart(FILE *fp)
 
 void PairPeridemContact::read_restart(FILE *fp)
 {
-  // format 1 (raw struct) is still read; format 2 writes field by field; format 3 adds
-  // centroid_bounding (0 in older files)
+  // format 2 writes the parameters field by field; format 3 adds centroid_bounding (0 in
+  // files of format 2)
   const int format =
-      peridem_lmp::read_restart_version(lmp, fp, peridem_lmp::RESTART_PAIR_CONTACT, 1, STYLE);
+      peridem_lmp::read_restart_version(lmp, fp, peridem_lmp::RESTART_PAIR_CONTACT, 2, STYLE);
   read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++)
@@ -907,8 +906,7 @@ void PairPeridemContact::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
       peridem_lmp::ContactSpec &s = spec[i][j];
-      s.params = format == 1 ? peridem_lmp::read_contact_params_v1(lmp, fp, STYLE)
-                             : peridem_lmp::read_contact_params(lmp, fp, STYLE);
+      s.params = peridem_lmp::read_contact_params(lmp, fp, STYLE);
       double extra[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       const int nextra = format >= 3 ? 7 : 6;
       if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), nextra, fp, nullptr, error);

@@ -15,15 +15,11 @@ peridem_add_error_test(restart_old_pair ${_in}/restart_format/read_old.in
   "pair_style peridem/contact: the restart file was written by an older PERIDEM"
   -var file ${_in}/restart_format/old_pair.restart)
 
-# pair_style peridem/contact writes its parameters field by field (format 2); a file of
-# format 1 (the raw struct, v1_pair.restart written by the build of commit 63560cc with
-# make_state.in) is still read: the run from it equals the run from a file of the
-# current format written from the same state, on 1 and 2 ranks
-add_test(NAME restart.contact_format1_read
-  COMMAND ${PERIDEM_RUN}/run_variants.sh $<TARGET_FILE:lmp_peridem>
-          ${_in}/restart_format contact_v1_vs_v2.in
-          ${CMAKE_CURRENT_BINARY_DIR}/restart_format_v1 ""
-          "1" "1 -var make 0 -var file v1_pair.restart" "2 -var make 0 -var file v1_pair.restart")
+# pair_style peridem/contact writes its parameters field by field (formats 2 and 3); a file of
+# format 1 (the raw struct, v1_pair.restart written by the build of commit 63560cc) is refused
+peridem_add_error_test(restart_format1_pair ${_in}/restart_format/read_old.in
+  "pair_style peridem/contact: the restart file was written by an older PERIDEM"
+  -var file ${_in}/restart_format/v1_pair.restart)
 
 # a bed compacted by a moving lid (the soak's input on 12 grains: contact with
 # nodal damping and friction, gravity, fix peridem/wall, broken bonds) continues
