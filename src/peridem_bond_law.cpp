@@ -126,29 +126,6 @@ BondConstants direct_bond_constants(double c, double s0)
   return {c, s0};
 }
 
-double implied_youngs_modulus(int dimension, Micromodulus micromodulus, double c, double horizon)
-{
-  require_dimension(dimension);
-  require_positive("spring constant c", c);
-  require_positive("horizon", horizon);
-  const double nu = bond_based_poisson_ratio(dimension);
-  if (dimension == 2)
-    return 0.5 * c * kPi * std::pow(horizon, 3) * (1.0 - nu) * moment(micromodulus, 2);
-  const double K = 2.0 * kPi * c * std::pow(horizon, 4) * moment(micromodulus, 3) / 9.0;
-  return 3.0 * K * (1.0 - 2.0 * nu);
-}
-
-double implied_fracture_energy(int dimension, Micromodulus micromodulus, double c, double s0,
-                               double horizon)
-{
-  require_dimension(dimension);
-  require_positive("spring constant c", c);
-  require_positive("critical stretch s0", s0);
-  require_positive("horizon", horizon);
-  if (dimension == 2) return c * s0 * s0 * moment(micromodulus, 3) * std::pow(horizon, 4);
-  return 0.5 * kPi * c * s0 * s0 * moment(micromodulus, 4) * std::pow(horizon, 5);
-}
-
 double lps_critical_stretch(double K, double G, double G_c, double horizon)
 {
   require_positive("bulk modulus K", K);

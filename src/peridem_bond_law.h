@@ -98,12 +98,6 @@ BondConstants derive_bond_constants(int dimension, Micromodulus micromodulus, El
 // c and s0 given directly (for comparison with other codes); validated > 0.
 BondConstants direct_bond_constants(double c, double s0);
 
-// Inverse of derive_bond_constants' energy matching: Young's modulus and G_c implied by c, s0
-// (useful for logging what a directly given c, s0 means physically).
-double implied_youngs_modulus(int dimension, Micromodulus micromodulus, double c, double horizon);
-double implied_fracture_energy(int dimension, Micromodulus micromodulus, double c, double s0,
-                               double horizon);
-
 // Critical stretch of the linear peridynamic solid (state-based, 3D) used by Jha et al. 2021, eq.
 // (10) (from Zhu & Zhao): s0 = sqrt(G_c / ((3 G + (3/4)^4 (K - 5G/3)) eps)).
 double lps_critical_stretch(double K, double G, double G_c, double horizon);

@@ -147,39 +147,19 @@ inline double damping_ratio_from_restitution(double eps_n)
   return -l / std::sqrt(kPi * kPi + l * l);
 }
 
-// Restitution of a linear spring-dashpot with damping ratio zeta < 1 (closed form):
-//  damped the whole contact:    exp(-pi zeta/sqrt(1-zeta^2))
-//  damped only while approaching (the rebound is undamped, so the rebound speed is
-//  omega_0 * maximum compression):  exp(-zeta/sqrt(1-zeta^2) * atan(sqrt(1-zeta^2)/zeta))
-inline double restitution_from_damping_ratio(double zeta, bool approach_only)
-{
-  if (zeta <= 0.0) return 1.0;
-  const double w = std::sqrt(1.0 - zeta * zeta);
-  if (!approach_only) return std::exp(-kPi * zeta / w);
-  return std::exp(-zeta / w * std::atan2(w, zeta));
-}
-
 // Restitution-based dashpot viscosity (Jha et al. 2021, eq. 23 nodal, eq. 28 centroid):
 //   beta_n = -2 C ln(eps_n) sqrt(kappa_eff R_c m_eq/(pi^2 + ln(eps_n)^2))
 // m_eq = harmonic mean of the two masses (eq. 24 nodes, eq. 29 grains), kappa_eff eq. 25.
 // It is 2 zeta sqrt(k m) with zeta from damping_ratio_from_restitution, k = kappa_eff R_c and
 // m = m_eq; it yields restitution eps_n exactly only if C^2 kappa_eff R_c m_eq equals the
 // actual contact spring times the reduced mass AND the dashpot acts during the whole contact
-// (see restitution_exact_C and the tests); otherwise C is a calibration constant (Jha et al. 2021
+// (unittest/core/contact_reference.h); otherwise C is a calibration constant (Jha et al. 2021
 // uses C-bar = 100).  Units: force/velocity.
 inline double restitution_damping_coefficient(double eps_n, double C, double kappa_eff, double R_c,
                                               double m_eq)
 {
   if (eps_n >= 1.0) return 0.0;
   return 2.0 * C * damping_ratio_from_restitution(eps_n) * std::sqrt(kappa_eff * R_c * m_eq);
-}
-
-// The C that makes eq. (23) reproduce eps_n for an isolated node pair with the contact spring
-// k = K_n_eff V_i V_j and reduced mass m_red = m_eq/2 (damped during the whole contact):
-// C = sqrt(k m_red/(kappa_eff R_c m_eq)) = sqrt(k/(2 kappa_eff R_c)).
-inline double restitution_exact_C(double spring_k, double kappa_eff, double R_c)
-{
-  return std::sqrt(spring_k / (2.0 * kappa_eff * R_c));
 }
 
 enum class ContactDamping {
@@ -291,13 +271,9 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p);
 //   F = beta_bar delta_dot_c e_c   if delta_dot_c < 0                         (eq. 27 x |Omega_p|)
 // with beta_bar from restitution_damping_coefficient(eps_bar, C_bar, kappa_eff, R_c, M_eq),
 // M_eq = harmonic_mean(M_p, M_p') (eq. 28-29).  Eq. (30): each node x of grain p receives the
-// share F V_x/|Omega_p| (grain_node_share).  Returns the power F . (v_c - v_c') (<= 0).
+// share F V_x/|Omega_p|.  Returns the power F . (v_c - v_c') (<= 0).
 double centroid_damping_force(const double sep_c[3], const double vrel_c[3], double beta_bar,
                               bool in_contact, double f[3]);
-inline double grain_node_share(double node_volume, double grain_volume)
-{
-  return node_volume / grain_volume;
-}
 
 // ---------------------------------------------------------------------------------------
 // Stable time step

@@ -226,9 +226,6 @@ TEST(BondLaw, CriticalStretchReproducesFractureEnergy)
       for (ElasticInput in : {ElasticInput::YoungsModulus, ElasticInput::BulkModulus}) {
         const auto bc = derive_bond_constants(dim, m, in, 3e9, Gc, eps);
         EXPECT_NEAR(fracture_energy(dim, bc, m, eps) / Gc, 1.0, 1e-10) << dim << "D " << name(m);
-        EXPECT_NEAR(implied_fracture_energy(dim, m, bc.c, bc.s0, eps) / Gc, 1.0, 1e-13);
-        const double E = in == ElasticInput::YoungsModulus ? 3e9 : (dim == 2 ? 3e9 : 4.5e9);
-        EXPECT_NEAR(implied_youngs_modulus(dim, m, bc.c, eps) / E, 1.0, 1e-13);
       }
 }
 
