@@ -175,9 +175,8 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
 // built three times, for AVX-512, AVX2 and the baseline x86-64 (SSE2), chosen when the
 // library loads: pass (b) then takes eight or four bonds per instruction. Without FMA
 // contraction (-ffp-contract=off, cmake/PeridemLAMMPS.cmake), so each result is the same
-// IEEE operation as in compute_one_by_one(), to the bit. in.peri_impact, CPU time of the Bond
-// section, median of 6 interleaved runs: 5.0 (SSE2), 4.0-4.3 (AVX2), 3.6-4.4 ns per bond
-// (AVX-512)
+// IEEE operation as in compute_one_by_one(), to the bit (the gain per instruction set:
+// bench/README.md)
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif

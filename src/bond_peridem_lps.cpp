@@ -235,8 +235,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
    (bond_style peridem's fill_pieces: i2 per entry, i1 and x1 once per piece, a broken
    entry has partner i1; ONE_TYPE: one bond type for the list). DIM 2 leaves z out: 2d nodes
    lie in one plane, so |y| is the same IEEE result without it. (Chunks with vectorised
-   square roots, as bond_style peridem's loop, made both LPS passes 30 % slower on the
-   500-grain bed, session 7: not kept.)
+   square roots, as bond_style peridem's loop, made both LPS passes slower: bench/README.md.)
 ------------------------------------------------------------------------- */
 
 template <int DIM, bool ONE_TYPE> void BondPeridemLPS::dilation_pass()

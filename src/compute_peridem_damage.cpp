@@ -151,7 +151,7 @@ void ComputePeridemDamage::count_bonds()
   const int nall = nlocal + atom->nghost;
   const tagint *tag = atom->tag;
   // x and x0 flat (contiguous per-atom arrays), the bond arrays hoisted: this loop runs at
-  // every thermo output (in.peri_impact: 3.7 % of the run with the row pointers, session 7)
+  // every thermo output
   const double *x = nall > 0 ? atom->x[0] : nullptr;
   const double *x0 = nall > 0 ? atom->x0[0] : nullptr;
   const int *num_bond = atom->num_bond;

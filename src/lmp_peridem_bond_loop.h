@@ -14,12 +14,10 @@
    LAMMPS lists the bonds of one atom i1 one after the other: both loops
    sum the forces on i1 in plain local variables while i1 repeats and add
    them to f once per atom, so that consecutive bonds do not wait for each
-   other's store to f[i1] (with a cached 1/r0: 5.9 -> 5.0 ns per bond on
-   in.peri.pmb, session 2). The sums stay locals of the loop, which
-   add_bond_force() gets by reference: a store object holding them and f
-   cost 8 % of the loop (session 3); these inline functions cost nothing
-   measurable (session 4). f is indexed flat from f[0], as LAMMPS's OPT
-   styles do.
+   other's store to f[i1]. The sums stay locals of the loop, which
+   add_bond_force() gets by reference (a store object holding them and f
+   was measurably slower: bench/README.md). f is indexed flat from f[0], as
+   LAMMPS's OPT styles do.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_PERIDEM_BOND_LOOP_H

@@ -16,10 +16,8 @@
    loop then reads the partners of a node from a few kilobytes around it,
    in the same pattern from node to node. LAMMPS's own sort (spatial bins
    of half the neighbour cutoff) interleaves the grains of a bed row by row
-   instead: in the 2000-grain bed of bench/compaction-bed (241,192 nodes)
-   the bond loop took 4.8 ns per bond in that order and 3.6 ns in this one,
-   and a uniform block of as many nodes 3.2 ns (session 9). Spatial bins
-   within each grain gave 4.2 ns.
+   instead, and the bond loop of a large bed is a third slower in that order
+   (bench/compaction-bed; the figures in bench/README.md).
 ------------------------------------------------------------------------- */
 
 #ifndef PERIDEM_ATOM_ORDER_H

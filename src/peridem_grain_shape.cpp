@@ -27,7 +27,7 @@ PrincipalAxes principal_axes(const double s[6])
   m << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
   // the iterative solver: computeDirect() (closed form) loses about half the digits when two
   // eigenvalues are (nearly) equal, as for a disk or a square: 1e-9 of 0.37 for a square of
-  // 21 x 21 nodes, depending on the order of the sums over its nodes (session 9)
+  // 21 x 21 nodes, depending on the order of the sums over its nodes
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
   PrincipalAxes p{};
   for (int k = 0; k < 3; k++) {

@@ -29,6 +29,9 @@ report "compiler builtins" "$(grep -n '__builtin_' -- *.cpp *.h)"
 report "LAMMPS_VERSION_NUMBER is not a LAMMPS macro" "$(grep -n 'LAMMPS_VERSION_NUMBER' -- *.cpp *.h)"
 report "project shorthand instead of an author-year citation" \
   "$(grep -nE '\[BL\]|\[JDBL\]|\bseed (§|Sec\.|eq\.|Table)|\bseed'"'"'s\b|grain-shape seed|PeriDEM seed|\bissue [0-9]+|shared/seeds|in the seed\b|[Tt]he seed \(|grain-shape paper|PeriDEM paper' -- *.cpp *.h)"
+# the history of a measurement belongs in bench/README.md, not in a comment
+report "development-log labels or dates in src/ (measurement history: bench/README.md)" \
+  "$(grep -nE '\b[Ss]ession [0-9]+|\b20[0-9]{2}-[01][0-9]-[0-3][0-9]\b|[0-9.]+ -> [0-9.]+ ns' -- *.cpp *.h)"
 for f in peridem_*.cpp peridem_*.h; do
   for inc in $(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$f"); do
     case "$inc" in
