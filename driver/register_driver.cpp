@@ -35,30 +35,30 @@ using namespace LAMMPS_NS;
 namespace {
 
 // inserts each style into the style map of its kind
-class MapInserter : public peridem_lmp::StyleSink {
+class MapInserter : public PERIDEM_NS::StyleSink {
  public:
   explicit MapInserter(LAMMPS *lmp) : lmp(lmp) {}
-  void atom(const char *name, peridem_lmp::AtomVecCreator c) override
+  void atom(const char *name, PERIDEM_NS::AtomVecCreator c) override
   {
     (*lmp->atom->avec_map)[name] = c;
   }
-  void bond(const char *name, peridem_lmp::BondCreator c) override
+  void bond(const char *name, PERIDEM_NS::BondCreator c) override
   {
     (*lmp->force->bond_map)[name] = c;
   }
-  void pair(const char *name, peridem_lmp::PairCreator c) override
+  void pair(const char *name, PERIDEM_NS::PairCreator c) override
   {
     (*lmp->force->pair_map)[name] = c;
   }
-  void fix(const char *name, peridem_lmp::FixCreator c) override
+  void fix(const char *name, PERIDEM_NS::FixCreator c) override
   {
     (*lmp->modify->fix_map)[name] = c;
   }
-  void compute(const char *name, peridem_lmp::ComputeCreator c) override
+  void compute(const char *name, PERIDEM_NS::ComputeCreator c) override
   {
     (*lmp->modify->compute_map)[name] = c;
   }
-  void command(const char *name, peridem_lmp::CommandCreator c) override
+  void command(const char *name, PERIDEM_NS::CommandCreator c) override
   {
     (*lmp->input->command_map)[name] = c;
   }
@@ -69,7 +69,8 @@ class MapInserter : public peridem_lmp::StyleSink {
 
 } // namespace
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 std::string version_mismatch_message(const std::string &compiled, const std::string &running)
 {
@@ -92,12 +93,13 @@ void register_styles(LAMMPS *lmp, const std::string &expected_version)
   for_each_style(inserter);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 extern "C" int peridem_register(void *lmp)
 {
   if (!lmp) return 1;
-  peridem_lmp::register_styles(static_cast<LAMMPS *>(lmp), LAMMPS_VERSION);
+  PERIDEM_NS::register_styles(static_cast<LAMMPS *>(lmp), LAMMPS_VERSION);
   return 0;
 }
 

@@ -31,7 +31,8 @@ int peridem_register(void *lmp);
 const char *peridem_lammps_version();
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 /* The message for a version mismatch, empty when the versions agree. */
 std::string version_mismatch_message(const std::string &compiled, const std::string &running);
@@ -44,6 +45,7 @@ void check_lammps_version(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_ve
    `expected_version`; peridem_register() passes the compiled-in version. */
 void register_styles(LAMMPS_NS::LAMMPS *lmp, const std::string &expected_version);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -33,38 +33,38 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// Passes each style of peridem_lmp::for_each_style to the plugin loader. The
+// Passes each style of PERIDEM_NS::for_each_style to the plugin loader. The
 // loader stores a creator as an untyped factory and casts it back to the
 // typed creator of its style kind (Force::PairCreator, ...), so the typed
 // creators travel through the casts unchanged.
-class PluginRegistrar : public peridem_lmp::StyleSink {
+class PluginRegistrar : public PERIDEM_NS::StyleSink {
  public:
   PluginRegistrar(LAMMPS *lmp, void *handle, lammpsplugin_regfunc reg)
       : lmp(lmp), handle(handle), reg(reg)
   {
   }
   // the loader of LAMMPS 29Sep2021 has no atom styles: insert it directly
-  void atom(const char *name, peridem_lmp::AtomVecCreator c) override
+  void atom(const char *name, PERIDEM_NS::AtomVecCreator c) override
   {
     (*lmp->atom->avec_map)[name] = c;
   }
-  void bond(const char *name, peridem_lmp::BondCreator c) override
+  void bond(const char *name, PERIDEM_NS::BondCreator c) override
   {
     add("bond", name, (lammpsplugin_factory1 *)c, nullptr);
   }
-  void pair(const char *name, peridem_lmp::PairCreator c) override
+  void pair(const char *name, PERIDEM_NS::PairCreator c) override
   {
     add("pair", name, (lammpsplugin_factory1 *)c, nullptr);
   }
-  void fix(const char *name, peridem_lmp::FixCreator c) override
+  void fix(const char *name, PERIDEM_NS::FixCreator c) override
   {
     add("fix", name, nullptr, (lammpsplugin_factory2 *)c);
   }
-  void compute(const char *name, peridem_lmp::ComputeCreator c) override
+  void compute(const char *name, PERIDEM_NS::ComputeCreator c) override
   {
     add("compute", name, nullptr, (lammpsplugin_factory2 *)c);
   }
-  void command(const char *name, peridem_lmp::CommandCreator c) override
+  void command(const char *name, PERIDEM_NS::CommandCreator c) override
   {
     add("command", name, (lammpsplugin_factory1 *)c, nullptr);
   }
@@ -97,7 +97,7 @@ extern "C" void lammpsplugin_init(void *lmp_ptr, void *handle, void *regfunc)
 {
   auto *lmp = static_cast<LAMMPS *>(lmp_ptr);
   // refuses a LAMMPS of another version with a clear error, as peridem_register does
-  peridem_lmp::check_lammps_version(lmp, LAMMPS_VERSION);
+  PERIDEM_NS::check_lammps_version(lmp, LAMMPS_VERSION);
   PluginRegistrar registrar(lmp, handle, (lammpsplugin_regfunc)regfunc);
-  peridem_lmp::for_each_style(registrar);
+  PERIDEM_NS::for_each_style(registrar);
 }

@@ -48,21 +48,21 @@ AtomVecPeridem::AtomVecPeridem(LAMMPS *lmp)
 
   // x0 travels with the atom (exchange, restart) and to ghosts (borders):
   // bond styles compute reference bond vectors from the x0 of both nodes.
-  peridem_lmp::set_fields(fields_grow,
-                          "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
-  peridem_lmp::set_fields(fields_copy,
-                          "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
-  peridem_lmp::set_fields(fields_comm, "");
-  peridem_lmp::set_fields(fields_comm_vel, "");
-  peridem_lmp::set_fields(fields_reverse, "");
-  peridem_lmp::set_fields(fields_border, "molecule rmass vfrac x0");
-  peridem_lmp::set_fields(fields_border_vel, "molecule rmass vfrac x0");
-  peridem_lmp::set_fields(fields_exchange,
-                          "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
-  peridem_lmp::set_fields(fields_restart, "molecule num_bond bond_type bond_atom rmass vfrac x0");
-  peridem_lmp::set_fields(fields_create, "molecule num_bond nspecial rmass vfrac x0");
-  peridem_lmp::set_fields(fields_data_atom, "id molecule type vfrac rmass x x0");
-  peridem_lmp::set_fields(fields_data_vel, "id v");
+  PERIDEM_NS::set_fields(fields_grow,
+                         "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_copy,
+                         "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_comm, "");
+  PERIDEM_NS::set_fields(fields_comm_vel, "");
+  PERIDEM_NS::set_fields(fields_reverse, "");
+  PERIDEM_NS::set_fields(fields_border, "molecule rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_border_vel, "molecule rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_exchange,
+                         "molecule num_bond bond_type bond_atom nspecial special rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_restart, "molecule num_bond bond_type bond_atom rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_create, "molecule num_bond nspecial rmass vfrac x0");
+  PERIDEM_NS::set_fields(fields_data_atom, "id molecule type vfrac rmass x x0");
+  PERIDEM_NS::set_fields(fields_data_vel, "id v");
 
   setup_fields();
 }
@@ -239,7 +239,7 @@ void AtomVecPeridem::check_restart_atom(int i)
    compute property/atom names: vfrac, x0x, x0y, x0z
 ------------------------------------------------------------------------- */
 
-int AtomVecPeridem::property_atom(peridem_lmp::PropertyAtomName name)
+int AtomVecPeridem::property_atom(PERIDEM_NS::PropertyAtomName name)
 {
   const std::string word(name);
   for (int i = 0; i < num_properties; i++)

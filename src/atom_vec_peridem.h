@@ -44,7 +44,7 @@ class AtomVecPeridem : public AtomVec {
   void pack_restart_pre(int) override;
   void pack_restart_post(int) override;
   void unpack_restart_init(int) override;
-  int property_atom(peridem_lmp::PropertyAtomName) override;
+  int property_atom(PERIDEM_NS::PropertyAtomName) override;
   void pack_property_atom(int, double *, int, int) override;
 
  private:

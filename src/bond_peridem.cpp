@@ -44,7 +44,7 @@ const char *const COEFF = "bond_coeff";
 
 BondPeridem::BondPeridem(LAMMPS *lmp) : BondPeridemBase(lmp), c(nullptr), conic(nullptr)
 {
-  peridem_lmp::cite_grain_shape(lmp);
+  PERIDEM_NS::cite_grain_shape(lmp);
 }
 
 BondPeridem::~BondPeridem()
@@ -120,7 +120,7 @@ inline __attribute__((always_inline)) void BondPeridem::chunked_pass()
 
   // pass (c) on the base's traversal: entry n is j = n - n0 of the chunk's arrays
   struct Forces {
-    peridem_lmp::BondForces out;
+    PERIDEM_NS::BondForces out;
     const double *dx, *dy, *dz, *rv, *sv, *fb, *r0c;
     int n0 = 0, j = 0;
     void piece(int) {}
@@ -203,7 +203,7 @@ void BondPeridem::compute_chunked()
 template <bool ONE_TYPE> void BondPeridem::compute_one_by_one(int eflag)
 {
   struct OneByOne {
-    peridem_lmp::BondForces out;
+    PERIDEM_NS::BondForces out;
     BondPeridem *self;
     const double *x;
     int eflag;
@@ -214,7 +214,7 @@ template <bool ONE_TYPE> void BondPeridem::compute_one_by_one(int eflag)
     void piece(int) {}
     void measure(int n, int i1, int i2)
     {
-      peridem_lmp::separation(x, i1, i2, del);
+      PERIDEM_NS::separation(x, i1, i2, del);
       r = std::sqrt(del[0] * del[0] + del[1] * del[1] + del[2] * del[2]);
       s = peridem::stretch_from_inverse(r, inv_r0[n]);
     }
@@ -340,7 +340,7 @@ bool BondPeridem::coeff_keyword(const std::string &key, const char *value, const
 {
   ModelArgs &m = margs;
   if (key == "micromodulus") {
-    m.micro = peridem_lmp::parse_micromodulus(lmp, COEFF, value);
+    m.micro = PERIDEM_NS::parse_micromodulus(lmp, COEFF, value);
     m.haveMicro = true;
   } else if (key == "E") {
     m.E = coeff_positive("E (Young's modulus)", value, style);
@@ -450,7 +450,7 @@ void BondPeridem::coeff(int narg, char **arg)
                    "{} type {}: c = {:.10g}, s0 = {:.10g}, horizon = {:.10g}, {} micromodulus, "
                    "{}d ({}){}\n",
                    STYLE, arg[0], p.c, p.s0, p.horizon,
-                   peridem_lmp::micromodulus_name(p.micromodulus), dimension, origin,
+                   PERIDEM_NS::micromodulus_name(p.micromodulus), dimension, origin,
                    p.breakable ? "" : ", unbreakable");
 }
 
@@ -461,7 +461,7 @@ void BondPeridem::coeff(int narg, char **arg)
 
 void BondPeridem::write_restart(FILE *fp)
 {
-  peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_BOND_PERIDEM);
+  PERIDEM_NS::write_restart_tag(fp, PERIDEM_NS::RESTART_BOND_PERIDEM);
   write_restart_settings(fp);
   for (double *a : {c, s0, horizon, spacing}) write_types(fp, a);
   write_types(fp, conic);
@@ -470,7 +470,7 @@ void BondPeridem::write_restart(FILE *fp)
 
 void BondPeridem::read_restart(FILE *fp)
 {
-  peridem_lmp::check_restart_tag(lmp, fp, peridem_lmp::RESTART_BOND_PERIDEM, "bond_style peridem");
+  PERIDEM_NS::check_restart_tag(lmp, fp, PERIDEM_NS::RESTART_BOND_PERIDEM, "bond_style peridem");
   read_restart_settings(fp);
   allocate();
   const int n = atom->nbondtypes;
@@ -478,12 +478,12 @@ void BondPeridem::read_restart(FILE *fp)
   read_types(fp, conic);
   read_types(fp, breakable);
   constexpr double big = std::numeric_limits<double>::max();
-  peridem_lmp::check_restart_values(lmp, STYLE, "bond constant c", &c[1], n, 1e-300, big);
-  peridem_lmp::check_restart_values(lmp, STYLE, "critical stretch", &s0[1], n, 1e-300, big);
-  peridem_lmp::check_restart_values(lmp, STYLE, "horizon", &horizon[1], n, 1e-300, big);
-  peridem_lmp::check_restart_values(lmp, STYLE, "spacing", &spacing[1], n, 0.0, big);
-  peridem_lmp::check_restart_values(lmp, STYLE, "micromodulus", &conic[1], n, 0, 1);
-  peridem_lmp::check_restart_values(lmp, STYLE, "break flag", &breakable[1], n, 0, 1);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "bond constant c", &c[1], n, 1e-300, big);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "critical stretch", &s0[1], n, 1e-300, big);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "horizon", &horizon[1], n, 1e-300, big);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "spacing", &spacing[1], n, 0.0, big);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "micromodulus", &conic[1], n, 0, 1);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "break flag", &breakable[1], n, 0, 1);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 

@@ -114,7 +114,7 @@ static inline double reference_length_flat(Domain *domain, const double *x0, int
   double dx = a[0] - b[0];
   double dy = a[1] - b[1];
   double dz = a[2] - b[2];
-  peridem_lmp::minimum_image(domain, dx, dy, dz);
+  PERIDEM_NS::minimum_image(domain, dx, dy, dz);
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
@@ -314,7 +314,7 @@ void BondPeridemBase::settings(int narg, char **arg)
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
     const std::string value = arg[iarg + 1];
     if (key == "break") {
-      const int mode = peridem_lmp::choice(lmp, STYLE, key, value, {"tension", "absolute", "off"});
+      const int mode = PERIDEM_NS::choice(lmp, STYLE, key, value, {"tension", "absolute", "off"});
       break_flag = mode != 2;
       if (mode == 1)
         breakage = peridem::BreakageMode::Absolute;
@@ -322,11 +322,11 @@ void BondPeridemBase::settings(int narg, char **arg)
         breakage = peridem::BreakageMode::Tension;
     } else if (key == "break_order") {
       break_after_force =
-          peridem_lmp::choice(lmp, STYLE, key, value, {"before_force", "after_force"});
+          PERIDEM_NS::choice(lmp, STYLE, key, value, {"before_force", "after_force"});
     } else if (key == "volume_correction") {
-      volume_correction = peridem_lmp::choice(lmp, STYLE, key, value, {"none", "linear"});
+      volume_correction = PERIDEM_NS::choice(lmp, STYLE, key, value, {"none", "linear"});
     } else if (key == "cohesive") {
-      cohesive = peridem_lmp::yes_no(lmp, STYLE, key, value);
+      cohesive = PERIDEM_NS::yes_no(lmp, STYLE, key, value);
     } else
       error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
   }
@@ -340,7 +340,7 @@ void BondPeridemBase::settings(int narg, char **arg)
 
 double BondPeridemBase::coeff_positive(const char *what, const char *value, const char *style)
 {
-  const double v = peridem_lmp::number(lmp, COEFF, what, value);
+  const double v = PERIDEM_NS::number(lmp, COEFF, what, value);
   if (!(v > 0.0)) error->all(FLERR, "{}: {} must be > 0 for {}, not {}", COEFF, what, style, value);
   return v;
 }
@@ -357,7 +357,7 @@ BondPeridemBase::CoeffArgs BondPeridemBase::parse_coeff(int narg, char **arg, co
     if (key == "material") {
       if (iarg + 2 >= narg)
         error->all(FLERR, "{}: material needs a file name and a material name", COEFF);
-      a.material = peridem_lmp::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
+      a.material = PERIDEM_NS::load_material(lmp, COEFF, arg[iarg + 1], arg[iarg + 2]);
       a.haveMaterial = true;
       a.origin = fmt::format("material {} of {}", arg[iarg + 2], arg[iarg + 1]);
       iarg += 3;
@@ -366,7 +366,7 @@ BondPeridemBase::CoeffArgs BondPeridemBase::parse_coeff(int narg, char **arg, co
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", COEFF, key);
     const char *value = arg[iarg + 1];
     if (key == "break") {
-      a.breakable = peridem_lmp::yes_no(lmp, COEFF, key, value);
+      a.breakable = PERIDEM_NS::yes_no(lmp, COEFF, key, value);
     } else if (key == "Gc") {
       a.Gc = coeff_positive("Gc (fracture energy)", value, style);
       a.haveGc = true;
@@ -435,9 +435,9 @@ void BondPeridemBase::init_style()
   }
   // the bookkeeping of broken bonds, nodes that leave the box through a fixed boundary, the
   // order of the nodes in memory: one fix each, created once
-  bonds_fix = peridem_lmp::own_fix<FixPeridemBonds>(lmp, "peridem/bonds", STYLE);
-  peridem_lmp::own_fix<FixPeridemEscapes>(lmp, "peridem/escapes", STYLE);
-  FixPeridemOrder *order = peridem_lmp::own_fix<FixPeridemOrder>(lmp, "peridem/order", STYLE);
+  bonds_fix = PERIDEM_NS::own_fix<FixPeridemBonds>(lmp, "peridem/bonds", STYLE);
+  PERIDEM_NS::own_fix<FixPeridemEscapes>(lmp, "peridem/escapes", STYLE);
+  FixPeridemOrder *order = PERIDEM_NS::own_fix<FixPeridemOrder>(lmp, "peridem/order", STYLE);
 
   // Nodes in memory grain by grain, in the order of creation (peridem_atom_order.h says why),
   // at the frequency of LAMMPS's sort
@@ -489,7 +489,7 @@ void BondPeridemBase::read_restart_settings(FILE *fp)
   int settings[5];
   if (comm->me == 0) utils::sfread(FLERR, settings, sizeof(int), 5, fp, nullptr, error);
   MPI_Bcast(settings, 5, MPI_INT, 0, world);
-  peridem_lmp::check_restart_values(lmp, STYLE, "setting", settings, 5, 0, 1);
+  PERIDEM_NS::check_restart_values(lmp, STYLE, "setting", settings, 5, 0, 1);
   break_flag = settings[0];
   breakage = settings[1] ? peridem::BreakageMode::Absolute : peridem::BreakageMode::Tension;
   volume_correction = settings[2];
@@ -572,7 +572,7 @@ std::vector<double> BondPeridemBase::stability_omega2_of_types()
       const int i1 = b[0], i2 = b[1];
       if (b[2] <= 0 || !(kb[n] > 0.0)) continue;
       double e[3] = {x0[i2][0] - x0[i1][0], x0[i2][1] - x0[i1][1], x0[i2][2] - x0[i1][2]};
-      peridem_lmp::minimum_image(domain, e[0], e[1], e[2]);
+      PERIDEM_NS::minimum_image(domain, e[0], e[1], e[2]);
       const double r0 = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
       if (!(r0 > 0.0)) continue;
       for (double &ek : e) ek /= r0;

@@ -61,7 +61,7 @@ BondPeridemLPS::BondPeridemLPS(LAMMPS *lmp)
       plane(peridem::LpsPlane::PlaneStrain), dfac(3.0), sum(nullptr), theta_over_m(nullptr),
       inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1)
 {
-  peridem_lmp::cite_peridem(lmp);
+  PERIDEM_NS::cite_peridem(lmp);
 }
 
 BondPeridemLPS::~BondPeridemLPS()
@@ -303,7 +303,7 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
 {
   if (neighbor->nbondlist == 0) return; // the bond list may not exist yet on this rank
   struct Forces {
-    peridem_lmp::BondForces out;
+    PERIDEM_NS::BondForces out;
     const double *x, *r0c, *kc, *len, *theta_over_m, *inv_m;
     const peridem::LpsConstants *lc;
     double x10 = 0.0, x11 = 0.0, x12 = 0.0, tm1 = 0.0, im1 = 0.0;
@@ -349,7 +349,7 @@ template <int DIM, bool ONE_TYPE> void BondPeridemLPS::force_pass()
 template <bool ONE_TYPE> void BondPeridemLPS::force_pass_one_by_one(int eflag)
 {
   struct OneByOne {
-    peridem_lmp::BondForces out;
+    PERIDEM_NS::BondForces out;
     BondPeridemLPS *self;
     const double *x;
     int eflag;
@@ -364,7 +364,7 @@ template <bool ONE_TYPE> void BondPeridemLPS::force_pass_one_by_one(int eflag)
     void piece(int) {}
     void measure(int n, int i1, int i2)
     {
-      peridem_lmp::separation(x, i1, i2, del);
+      PERIDEM_NS::separation(x, i1, i2, del);
       r = len[n];
       e = r - r0c[n];
     }
@@ -411,7 +411,7 @@ bool BondPeridemLPS::settings_keyword(int iarg, int narg, char **arg)
   if (strcmp(arg[iarg], "plane") != 0) return false;
   if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword plane needs a value", STYLE);
   plane = peridem::LpsPlane(
-      peridem_lmp::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
+      PERIDEM_NS::choice(lmp, STYLE, "plane", arg[iarg + 1], {PLANE[0], PLANE[1], PLANE[2]}));
   plane_given = true;
   return true;
 }
@@ -447,7 +447,7 @@ bool BondPeridemLPS::coeff_keyword(const std::string &key, const char *value, co
     coeff_positive("E (Young's modulus)", value, style);
     m.haveE = true;
   } else if (key == "micromodulus") {
-    peridem_lmp::parse_micromodulus(lmp, COEFF, value);
+    PERIDEM_NS::parse_micromodulus(lmp, COEFF, value);
     m.haveMicro = true;
   } else
     return false;
@@ -495,8 +495,8 @@ void BondPeridemLPS::coeff(int narg, char **arg)
                  COEFF, STYLE);
   }
   if (m.haveInfluence)
-    infl = peridem_lmp::choice(lmp, COEFF, "influence", m.influence,
-                               {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
+    infl = PERIDEM_NS::choice(lmp, COEFF, "influence", m.influence,
+                              {INFLUENCE[0], INFLUENCE[1], INFLUENCE[2]});
   try {
     // Jha et al. 2021, eq. 10 (Zhu & Zhao's 3D LPS value; used in 2D too, as the paper does)
     s0val = a.haveGc ? peridem::lps_critical_stretch(K, G, a.Gc, eps) : a.s0;
@@ -543,7 +543,7 @@ void BondPeridemLPS::init_style()
 
 void BondPeridemLPS::write_restart(FILE *fp)
 {
-  peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_BOND_PERIDEM_LPS);
+  PERIDEM_NS::write_restart_tag(fp, PERIDEM_NS::RESTART_BOND_PERIDEM_LPS);
   write_restart_settings(fp); // LAMMPS calls it only under bond_style hybrid
   for (double *arr : {bulk, shear, s0, horizon, spacing}) write_types(fp, arr);
   write_types(fp, influence);
@@ -552,8 +552,8 @@ void BondPeridemLPS::write_restart(FILE *fp)
 
 void BondPeridemLPS::read_restart(FILE *fp)
 {
-  peridem_lmp::check_restart_tag(lmp, fp, peridem_lmp::RESTART_BOND_PERIDEM_LPS,
-                                 "bond_style peridem/lps");
+  PERIDEM_NS::check_restart_tag(lmp, fp, PERIDEM_NS::RESTART_BOND_PERIDEM_LPS,
+                                "bond_style peridem/lps");
   read_restart_settings(fp);
   if (!allocated) allocate();
   const int n = atom->nbondtypes;
@@ -561,14 +561,14 @@ void BondPeridemLPS::read_restart(FILE *fp)
   for (int *arr : {influence, breakable}) read_types(fp, arr);
   const char *style = "bond_style peridem/lps";
   constexpr double big = std::numeric_limits<double>::max();
-  peridem_lmp::check_restart_values(lmp, style, "bulk modulus", &bulk[1], n, 1e-300, big);
-  peridem_lmp::check_restart_values(lmp, style, "shear modulus", &shear[1], n, 0.0, big);
-  peridem_lmp::check_restart_values(lmp, style, "critical stretch", &s0[1], n, 1e-300, big);
-  peridem_lmp::check_restart_values(lmp, style, "horizon", &horizon[1], n, 1e-300, big);
-  peridem_lmp::check_restart_values(lmp, style, "spacing", &spacing[1], n, 0.0, big);
-  peridem_lmp::check_restart_values(lmp, style, "influence function", &influence[1], n, 0,
-                                    int(sizeof(INFLUENCE) / sizeof(INFLUENCE[0])) - 1);
-  peridem_lmp::check_restart_values(lmp, style, "break flag", &breakable[1], n, 0, 1);
+  PERIDEM_NS::check_restart_values(lmp, style, "bulk modulus", &bulk[1], n, 1e-300, big);
+  PERIDEM_NS::check_restart_values(lmp, style, "shear modulus", &shear[1], n, 0.0, big);
+  PERIDEM_NS::check_restart_values(lmp, style, "critical stretch", &s0[1], n, 1e-300, big);
+  PERIDEM_NS::check_restart_values(lmp, style, "horizon", &horizon[1], n, 1e-300, big);
+  PERIDEM_NS::check_restart_values(lmp, style, "spacing", &spacing[1], n, 0.0, big);
+  PERIDEM_NS::check_restart_values(lmp, style, "influence function", &influence[1], n, 0,
+                                   int(sizeof(INFLUENCE) / sizeof(INFLUENCE[0])) - 1);
+  PERIDEM_NS::check_restart_values(lmp, style, "break flag", &breakable[1], n, 0, 1);
   for (int i = 1; i <= n; i++) setflag[i] = 1;
 }
 
@@ -585,7 +585,7 @@ void BondPeridemLPS::read_restart_settings(FILE *fp)
   int p = 0;
   if (comm->me == 0) utils::sfread(FLERR, &p, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&p, 1, MPI_INT, 0, world);
-  peridem_lmp::check_restart_values(lmp, "bond_style peridem/lps", "plane mode", &p, 1, 0, 2);
+  PERIDEM_NS::check_restart_values(lmp, "bond_style peridem/lps", "plane mode", &p, 1, 0, 2);
   plane = peridem::LpsPlane(p);
 }
 

@@ -81,7 +81,7 @@ ComputePeridemBed::ComputePeridemBed(LAMMPS *lmp, int narg, char **arg)
         error->all(FLERR, "Illegal {} command: top {}: expected surface, max, region or v_name",
                    STYLE, value);
     } else if (strcmp(arg[iarg], "bin") == 0) {
-      bin_width = peridem_lmp::number(lmp, STYLE, "bin", value);
+      bin_width = PERIDEM_NS::number(lmp, STYLE, "bin", value);
       if (bin_width <= 0.0)
         error->all(FLERR, "Illegal {} command: bin {} must be positive", STYLE, value);
     } else
@@ -101,7 +101,7 @@ ComputePeridemBed::~ComputePeridemBed()
 
 void ComputePeridemBed::init()
 {
-  Region *region = peridem_lmp::find_region(domain, id_region);
+  Region *region = PERIDEM_NS::find_region(domain, id_region);
   if (!region) error->all(FLERR, "{}: region {} does not exist", STYLE, id_region);
   if (!region->bboxflag)
     error->all(FLERR, "{}: region {} has no bounding box to serve as the container", STYLE,
@@ -124,7 +124,7 @@ void ComputePeridemBed::init()
 
 void ComputePeridemBed::find_holes()
 {
-  const tagint maxmol = peridem_lmp::max_grain_id(lmp);
+  const tagint maxmol = PERIDEM_NS::max_grain_id(lmp);
   holes.assign(maxmol + 1, 0.0);
   holes_ready = true;
   if (domain->dimension != 2) return;
@@ -134,7 +134,7 @@ void ComputePeridemBed::find_holes()
     mine.insert(mine.end(),
                 {double(atom->molecule[i]), atom->x0[i][0], atom->x0[i][1], atom->vfrac[i]});
   }
-  const std::vector<double> all = peridem_lmp::gather_all(lmp, mine);
+  const std::vector<double> all = PERIDEM_NS::gather_all(lmp, mine);
   std::vector<std::vector<double>> xy(maxmol + 1);
   std::vector<double> vmax(maxmol + 1, 0.0);
   for (size_t k = 0; k < all.size(); k += 4) {
@@ -154,7 +154,7 @@ void ComputePeridemBed::compute_vector()
   invoked_vector = update->ntimestep;
   // grains added since the holes were found (create_peridem_grains between
   // runs) need their holes, and rows in the per-grain sums
-  if (!holes_ready || peridem_lmp::max_grain_id(lmp) != tagint(holes.size()) - 1) find_holes();
+  if (!holes_ready || PERIDEM_NS::max_grain_id(lmp) != tagint(holes.size()) - 1) find_holes();
   const int vd = domain->dimension == 2 ? 1 : 2; // vertical: y in 2d, z in 3d
   const int nlat = domain->dimension == 2 ? 1 : 2;
   double **x = atom->x;
@@ -162,7 +162,7 @@ void ComputePeridemBed::compute_vector()
   const tagint maxmol = tagint(holes.size()) - 1;
 
   // volume per grain: the bed's volume, its grains and their mean size
-  const std::vector<double> per_grain = peridem_lmp::grain_reduce(
+  const std::vector<double> per_grain = PERIDEM_NS::grain_reduce(
       lmp, groupbit, maxmol, 1, [&](int i, double *r) { r[0] += atom->vfrac[i]; });
   double vgrain = 0.0, vholes = 0.0;
   int ngrains = 0;

@@ -86,7 +86,7 @@ void ComputePeridemContacts::compute_vector()
     mine.insert(mine.end(), {double(std::min(mol[i], mol[j])), double(std::max(mol[i], mol[j])),
                              s * d[0], s * d[1], s * d[2]});
   }
-  const std::vector<double> all = peridem_lmp::gather_all(lmp, mine);
+  const std::vector<double> all = PERIDEM_NS::gather_all(lmp, mine);
   std::vector<peridem::GrainContact> contacts(all.size() / 5);
   for (size_t k = 0; k < contacts.size(); k++) {
     const double *c = all.data() + 5 * k;
@@ -102,7 +102,7 @@ void ComputePeridemContacts::compute_vector()
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit) grains_here.insert(mol[i]);
   const std::vector<double> ids =
-      peridem_lmp::gather_all(lmp, std::vector<double>(grains_here.begin(), grains_here.end()));
+      PERIDEM_NS::gather_all(lmp, std::vector<double>(grains_here.begin(), grains_here.end()));
   const long long ngrains = (long long)std::set<double>(ids.begin(), ids.end()).size();
 
   stats[NCONTACT] = double(merged.size());

@@ -75,7 +75,7 @@ ComputePeridemDamage::ComputePeridemDamage(LAMMPS *lmp, int narg, char **arg)
       error->all(FLERR, "Illegal {} command: keyword z needs a value (stretch or displacement)",
                  STYLE);
     z_displacement =
-        peridem_lmp::choice(lmp, STYLE, "z", arg[iarg + 1], {"stretch", "displacement"});
+        PERIDEM_NS::choice(lmp, STYLE, "z", arg[iarg + 1], {"stretch", "displacement"});
   }
   if (!atom->molecular || !atom->molecule_flag || !atom->x0_flag)
     error->all(FLERR, "{} requires atom style peridem (bonds, grain IDs and x0)", STYLE);
@@ -174,8 +174,8 @@ void ComputePeridemDamage::count_bonds()
       const double *yi = x + 3 * i, *yj = x + 3 * j, *x0i = x0 + 3 * i, *x0j = x0 + 3 * j;
       double dy[3] = {yj[0] - yi[0], yj[1] - yi[1], yj[2] - yi[2]};
       double xi[3] = {x0j[0] - x0i[0], x0j[1] - x0i[1], x0j[2] - x0i[2]};
-      peridem_lmp::minimum_image(domain, dy[0], dy[1], dy[2]);
-      peridem_lmp::minimum_image(domain, xi[0], xi[1], xi[2]);
+      PERIDEM_NS::minimum_image(domain, dy[0], dy[1], dy[2]);
+      PERIDEM_NS::minimum_image(domain, xi[0], xi[1], xi[2]);
       const double r0 = std::sqrt(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2]);
       double z;
       if (z_displacement) {
@@ -196,7 +196,7 @@ void ComputePeridemDamage::count_bonds()
       if (newton_bond || tag[i] < partner) bonds_local[0] += 1.0;
     }
   }
-  if (newton_bond) peridem_lmp::reverse_comm(comm, this);
+  if (newton_bond) PERIDEM_NS::reverse_comm(comm, this);
 
   const double *nbroken = bonds_fix->broken_count();
   const double *zbroken = bonds_fix->broken_z();
@@ -246,9 +246,9 @@ void ComputePeridemDamage::grain_means()
   const int nlocal = atom->nlocal;
   const tagint *molecule = atom->molecule;
   const int *mask = atom->mask;
-  const tagint maxmol = peridem_lmp::max_grain_id(lmp);
+  const tagint maxmol = PERIDEM_NS::max_grain_id(lmp);
   const std::vector<double> global =
-      peridem_lmp::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
+      PERIDEM_NS::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
         row[0] += damage[i][PHI];
         row[1] += 1.0;
       });

@@ -90,8 +90,8 @@ ComputePeridemFragments::ComputePeridemFragments(LAMMPS *lmp, int narg, char **a
       // a node count is a whole number (2.5 would silently mean 3)
       min_size =
           min_kind == NODES
-              ? static_cast<double>(peridem_lmp::integer(lmp, STYLE, "min nodes", arg[iarg + 2]))
-              : peridem_lmp::number(lmp, STYLE, "min", arg[iarg + 2]);
+              ? static_cast<double>(PERIDEM_NS::integer(lmp, STYLE, "min nodes", arg[iarg + 2]))
+              : PERIDEM_NS::number(lmp, STYLE, "min", arg[iarg + 2]);
       if (min_size < 0.0)
         error->all(FLERR, "Illegal {} command: min {} {} must not be negative", STYLE,
                    arg[iarg + 1], arg[iarg + 2]);
@@ -109,7 +109,7 @@ ComputePeridemFragments::ComputePeridemFragments(LAMMPS *lmp, int narg, char **a
   comm_forward = comm_reverse = 1;
 
   // grains are fixed at creation: the per-grain array has a row per grain ID
-  maxmol = peridem_lmp::max_grain_id(lmp);
+  maxmol = PERIDEM_NS::max_grain_id(lmp);
   size_array_rows = std::max<tagint>(maxmol, 1);
   size_array_cols = 2;
   memory->create(per_grain, size_array_rows, 2, "peridem/fragments:per_grain");
@@ -126,7 +126,7 @@ ComputePeridemFragments::~ComputePeridemFragments()
 
 void ComputePeridemFragments::init()
 {
-  if (peridem_lmp::max_grain_id(lmp) > maxmol)
+  if (PERIDEM_NS::max_grain_id(lmp) > maxmol)
     error->all(FLERR, "{} {}: grain IDs beyond {} were added after the compute was defined", STYLE,
                id, maxmol);
   last_step = -1;
@@ -167,7 +167,7 @@ void ComputePeridemFragments::propagate()
   for (int i = 0; i < nall; i++) root[i] = find_root(root, i);
 
   for (int i = 0; i < nlocal; i++) label[i] = (mask[i] & groupbit) ? double(tag[i]) : 0.0;
-  peridem_lmp::forward_comm(comm, this);
+  PERIDEM_NS::forward_comm(comm, this);
 
   const double none = std::numeric_limits<double>::max();
   rootmin.assign(nall, none);
@@ -187,10 +187,10 @@ void ComputePeridemFragments::propagate()
     }
     if (force->newton_bond) { // a bond is stored by one of its atoms only
       std::vector<double> before(label, label + nlocal);
-      peridem_lmp::reverse_comm(comm, this);
+      PERIDEM_NS::reverse_comm(comm, this);
       for (int i = 0; i < nlocal && !changed; i++) changed = label[i] != before[i];
     }
-    peridem_lmp::forward_comm(comm, this);
+    PERIDEM_NS::forward_comm(comm, this);
     int any = 0;
     MPI_Allreduce(&changed, &any, 1, MPI_INT, MPI_MAX, world);
     if (!any) break;
@@ -245,7 +245,7 @@ void ComputePeridemFragments::collect()
     f[MASS] += atom->rmass[i];
   }
 
-  const std::vector<double> all = peridem_lmp::gather_all(lmp, mine);
+  const std::vector<double> all = PERIDEM_NS::gather_all(lmp, mine);
 
   // merge the pieces of a fragment that lie on several ranks
   const size_t n = all.size() / NCOLS;

@@ -91,7 +91,7 @@ ComputePeridemGrain::ComputePeridemGrain(LAMMPS *lmp, int narg, char **arg)
 
   array_flag = 1;
   extarray = 0;
-  maxmol = peridem_lmp::max_grain_id(lmp);
+  maxmol = PERIDEM_NS::max_grain_id(lmp);
   size_array_rows = std::max<tagint>(maxmol, 1);
   size_array_cols = NCOLS;
   memory->create(grains, size_array_rows, NCOLS, "peridem/grain:grains");
@@ -107,7 +107,7 @@ ComputePeridemGrain::~ComputePeridemGrain()
 
 void ComputePeridemGrain::init()
 {
-  if (peridem_lmp::max_grain_id(lmp) > maxmol)
+  if (PERIDEM_NS::max_grain_id(lmp) > maxmol)
     error->all(FLERR, "{} {}: grain IDs beyond {} were added after the compute was defined", STYLE,
                id, maxmol);
   auto find = [&](const char *cid, const char *kind) -> Compute * {
@@ -147,11 +147,11 @@ void ComputePeridemGrain::compute_array()
   if (fragments) fragments->refresh();
 
   // anchor of each grain: its smallest atom ID, unwrapped
-  const std::vector<double> anchor_tag = peridem_lmp::grain_reduce(
+  const std::vector<double> anchor_tag = PERIDEM_NS::grain_reduce(
       lmp, groupbit, maxmol, 1, [&](int i, double *r) { r[0] = std::min(r[0], double(tag[i])); },
       MPI_MIN, std::numeric_limits<double>::max());
   const std::vector<double> anchor =
-      peridem_lmp::grain_reduce(lmp, groupbit, maxmol, 3, [&](int i, double *r) {
+      PERIDEM_NS::grain_reduce(lmp, groupbit, maxmol, 3, [&](int i, double *r) {
         if (double(tag[i]) != anchor_tag[molecule[i]]) return;
         domain->unmap(x[i], image[i], r);
       });
@@ -163,7 +163,7 @@ void ComputePeridemGrain::compute_array()
 
   // volume, mass, nodes, first and second moments, momentum, damage
   const std::vector<double> sums =
-      peridem_lmp::grain_reduce(lmp, groupbit, maxmol, S_NCOLS, [&](int i, double *r) {
+      PERIDEM_NS::grain_reduce(lmp, groupbit, maxmol, S_NCOLS, [&](int i, double *r) {
         double d[3];
         offset(i, d);
         const double V = vfrac[i], m = rmass[i];
@@ -215,7 +215,7 @@ void ComputePeridemGrain::compute_array()
   }
 
   // extent: the length of the grain's node cloud along its major axis
-  const std::vector<double> reach = peridem_lmp::grain_reduce(
+  const std::vector<double> reach = PERIDEM_NS::grain_reduce(
       lmp, groupbit, maxmol, 2,
       [&](int i, double *r) {
         double d[3];

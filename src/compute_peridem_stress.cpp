@@ -74,7 +74,7 @@ ComputePeridemStress::ComputePeridemStress(LAMMPS *lmp, int narg, char **arg)
       id_variable = utils::strdup(value + 2);
     } else {
       volume_kind = VOLUME_NUMBER;
-      volume_value = peridem_lmp::number(lmp, STYLE, "volume", value);
+      volume_value = PERIDEM_NS::number(lmp, STYLE, "volume", value);
       if (volume_value <= 0.0)
         error->all(FLERR, "Illegal {} command: volume {} must be positive", STYLE, value);
     }
@@ -168,7 +168,7 @@ void ComputePeridemStress::compute_vector()
   Bond *bond = force->bond;
   if (bond) add(bond->vatom, force->newton_bond ? nall : nlocal, 6);
   for (Fix *wall : walls) add(wall->vatom, nlocal, 12);
-  if (force->newton) peridem_lmp::reverse_comm(comm, this);
+  if (force->newton) PERIDEM_NS::reverse_comm(comm, this);
 
   double local[30] = {};
   const double mvv2e = force->mvv2e;

@@ -38,7 +38,7 @@ constexpr const char *CMD = "create_peridem_bed";
 
 CreatePeridemBed::CreatePeridemBed(LAMMPS *lmp) : Command(lmp)
 {
-  peridem_lmp::cite_grain_shape(lmp);
+  PERIDEM_NS::cite_grain_shape(lmp);
 }
 
 /* ----------------------------------------------------------------------
@@ -76,12 +76,12 @@ void CreatePeridemBed::command(int narg, char **arg)
   };
   while (iarg < narg) {
     const std::string key = arg[iarg++];
-    auto num = [&](int k) { return peridem_lmp::number(lmp, CMD, key, arg[k]); };
+    auto num = [&](int k) { return PERIDEM_NS::number(lmp, CMD, key, arg[k]); };
     if (key == "count") {
       need(1, "count");
       // every disk becomes a grain of at least one node, and this LAMMPS numbers atoms in
       // 32 bits (LAMMPS_SMALLBIG): more disks than MAXTAGINT could never be placed
-      count = peridem_lmp::integer(lmp, CMD, key, arg[iarg++], 1, MAXTAGINT);
+      count = PERIDEM_NS::integer(lmp, CMD, key, arg[iarg++], 1, MAXTAGINT);
     } else if (key == "radius") {
       need(1, "radius");
       const std::string style = arg[iarg++];
@@ -105,7 +105,7 @@ void CreatePeridemBed::command(int narg, char **arg)
       have_radius = true;
     } else if (key == "seed") {
       need(1, "seed");
-      seed = peridem_lmp::integer(lmp, CMD, key, arg[iarg++]);
+      seed = PERIDEM_NS::integer(lmp, CMD, key, arg[iarg++]);
       if (seed <= 0) error->all(FLERR, "{}: seed must be > 0, got {}", CMD, seed);
     } else if (key == "box") {
       need(2 * dim, "box");

@@ -265,7 +265,7 @@ struct CreatePeridemGrains::Grain {
 
 CreatePeridemGrains::CreatePeridemGrains(LAMMPS *lmp) : Command(lmp)
 {
-  peridem_lmp::cite_grain_shape(lmp);
+  PERIDEM_NS::cite_grain_shape(lmp);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -283,10 +283,10 @@ void CreatePeridemGrains::command(int narg, char **arg)
   parse(narg, arg, opt);
   check(opt);
   if (opt.shape == "gmsh" || opt.shape == "file")
-    opt.file_text = peridem_lmp::read_text_file(lmp, CMD, opt.shape == "gmsh" ? "Gmsh" : "polygon",
-                                                opt.file, true);
+    opt.file_text = PERIDEM_NS::read_text_file(lmp, CMD, opt.shape == "gmsh" ? "Gmsh" : "polygon",
+                                               opt.file, true);
   if (!opt.boundary.empty())
-    opt.boundary_text = peridem_lmp::read_text_file(lmp, CMD, "polygon", opt.boundary, true);
+    opt.boundary_text = PERIDEM_NS::read_text_file(lmp, CMD, "polygon", opt.boundary, true);
   std::vector<const Grain *> per_grain;
   // one discretization per security-disk radius (bed files), and per grain where each grain
   // has its own outline
@@ -322,7 +322,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
 {
   if (narg < 2) error->all(FLERR, "Illegal {} command: expected atom type and shape", CMD);
   // types are checked here against the box, before they are stored in an int
-  o.type = peridem_lmp::integer(lmp, CMD, "atom type", arg[0], 1, atom->ntypes);
+  o.type = PERIDEM_NS::integer(lmp, CMD, "atom type", arg[0], 1, atom->ntypes);
   if (atom->nbondtypes == 0)
     error->all(FLERR, "{}: the box has no bond types; set bond/types in create_box", CMD);
   o.shape = arg[1];
@@ -333,7 +333,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       error->all(FLERR, "Illegal {} command: {} needs {} value(s)", CMD, what, n);
   };
   auto positive = [&](const char *str, const char *what) {
-    const double v = peridem_lmp::number(lmp, CMD, what, str);
+    const double v = PERIDEM_NS::number(lmp, CMD, what, str);
     if (!(v > 0.0)) error->all(FLERR, "{}: {} must be > 0, got {}", CMD, what, str);
     return v;
   };
@@ -348,7 +348,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
                              [&](const peridem::ShapeParameter &p) { return p.name == key; })
                : solid_shapes().at(o.shape).count(key) > 0;
       if (!known) break;
-      o.params[key] = peridem_lmp::number(lmp, CMD, key, arg[iarg + 1]);
+      o.params[key] = PERIDEM_NS::number(lmp, CMD, key, arg[iarg + 1]);
       iarg += 2;
     }
   } else if (o.shape == "file" || o.shape == "gmsh") {
@@ -367,9 +367,9 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     const std::string key = arg[iarg++];
     if (key == "at") {
       need(3, "at");
-      o.at.push_back({peridem_lmp::number(lmp, CMD, key, arg[iarg]),
-                      peridem_lmp::number(lmp, CMD, key, arg[iarg + 1]),
-                      peridem_lmp::number(lmp, CMD, key, arg[iarg + 2])});
+      o.at.push_back({PERIDEM_NS::number(lmp, CMD, key, arg[iarg]),
+                      PERIDEM_NS::number(lmp, CMD, key, arg[iarg + 1]),
+                      PERIDEM_NS::number(lmp, CMD, key, arg[iarg + 2])});
       iarg += 3;
     } else if (key == "positions") {
       need(1, "positions");
@@ -377,12 +377,12 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     } else if (key == "outlines") {
       need(1, "outlines");
       o.outlines_each =
-          peridem_lmp::choice(lmp, CMD, "outlines", arg[iarg++], {"each", "same"}) == 0;
+          PERIDEM_NS::choice(lmp, CMD, "outlines", arg[iarg++], {"each", "same"}) == 0;
       o.outlines_given = true;
     } else if (key == "fit") {
       need(1, "fit");
       o.fit_by_radius =
-          peridem_lmp::choice(lmp, CMD, "fit", arg[iarg++], {"enclosing", "radius"}) == 1;
+          PERIDEM_NS::choice(lmp, CMD, "fit", arg[iarg++], {"enclosing", "radius"}) == 1;
       o.fit_given = true;
     } else if (key == "label") {
       need(1, "label");
@@ -398,26 +398,26 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       o.density = positive(arg[iarg++], "density");
     } else if (key == "material") {
       need(2, "material");
-      material = peridem_lmp::load_material(lmp, CMD, arg[iarg], arg[iarg + 1]);
+      material = PERIDEM_NS::load_material(lmp, CMD, arg[iarg], arg[iarg + 1]);
       have_material = true;
       iarg += 2;
     } else if (key == "bond/type") {
       need(1, "bond/type");
-      o.bond_type = peridem_lmp::integer(lmp, CMD, key, arg[iarg++], 1, atom->nbondtypes);
+      o.bond_type = PERIDEM_NS::integer(lmp, CMD, key, arg[iarg++], 1, atom->nbondtypes);
     } else if (key == "rotate") {
       need(1, "rotate");
       o.rotate_given = true;
       if (strcmp(arg[iarg], "random") == 0) {
         need(2, "rotate random");
-        o.rotate_seed = peridem_lmp::integer(lmp, CMD, "rotate random", arg[iarg + 1]);
+        o.rotate_seed = PERIDEM_NS::integer(lmp, CMD, "rotate random", arg[iarg + 1]);
         if (o.rotate_seed <= 0) error->all(FLERR, "{}: rotate random seed must be > 0", CMD);
         iarg += 2;
       } else {
-        o.angle = peridem_lmp::number(lmp, CMD, key, arg[iarg++]) * MY_PI / 180.0;
+        o.angle = PERIDEM_NS::number(lmp, CMD, key, arg[iarg++]) * MY_PI / 180.0;
       }
     } else if (key == "axis") {
       need(3, "axis");
-      for (int k = 0; k < 3; k++) o.axis[k] = peridem_lmp::number(lmp, CMD, key, arg[iarg + k]);
+      for (int k = 0; k < 3; k++) o.axis[k] = PERIDEM_NS::number(lmp, CMD, key, arg[iarg + k]);
       const double norm =
           std::sqrt(o.axis[0] * o.axis[0] + o.axis[1] * o.axis[1] + o.axis[2] * o.axis[2]);
       if (!(norm > 0.0)) error->all(FLERR, "{}: rotation axis must not be zero", CMD);
@@ -454,7 +454,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
     } else if (key == "notch") {
       need(4, "notch");
       double v[4];
-      for (int k = 0; k < 4; k++) v[k] = peridem_lmp::number(lmp, CMD, key, arg[iarg + k]);
+      for (int k = 0; k < 4; k++) v[k] = PERIDEM_NS::number(lmp, CMD, key, arg[iarg + k]);
       o.notches.push_back({{v[0], v[1]}, {v[2], v[3]}});
       iarg += 4;
     } else if (key == "overlap") {
@@ -829,7 +829,7 @@ void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain 
     atom->map_set();
   }
   const bigint nbonds_previous = atom->nbonds;
-  const bigint nbonds = peridem_lmp::finish_bond_edit(lmp);
+  const bigint nbonds = PERIDEM_NS::finish_bond_edit(lmp);
 
   if (comm->me == 0) {
     if (o.at_radius.empty())
@@ -859,7 +859,7 @@ void CreatePeridemGrains::place(const Options &o, const std::vector<const Grain 
 
 void CreatePeridemGrains::read_positions(const char *file, Options &o)
 {
-  std::istringstream in(peridem_lmp::read_text_file(lmp, CMD, "positions", file, false));
+  std::istringstream in(PERIDEM_NS::read_text_file(lmp, CMD, "positions", file, false));
   std::string line;
   int columns = 0;
   for (int lineno = 1; std::getline(in, line); lineno++) {

@@ -57,7 +57,7 @@ void CutPeridemBonds::command(int narg, char **arg)
       error->all(FLERR, "{}: unknown keyword '{}' (expected segment x1 y1 x2 y2)", CMD, arg[iarg]);
     if (iarg + 5 > narg) error->all(FLERR, "{}: segment needs 4 values: x1 y1 x2 y2", CMD);
     double v[4];
-    for (int k = 0; k < 4; k++) v[k] = peridem_lmp::number(lmp, CMD, "segment", arg[iarg + 1 + k]);
+    for (int k = 0; k < 4; k++) v[k] = PERIDEM_NS::number(lmp, CMD, "segment", arg[iarg + 1 + k]);
     if (v[0] == v[2] && v[1] == v[3])
       error->all(FLERR, "{}: segment {} {} {} {} has zero length", CMD, arg[iarg + 1],
                  arg[iarg + 2], arg[iarg + 3], arg[iarg + 4]);
@@ -106,7 +106,7 @@ void CutPeridemBonds::command(int narg, char **arg)
     }
   }
 
-  const bigint nbonds = peridem_lmp::finish_bond_edit(lmp);
+  const bigint nbonds = PERIDEM_NS::finish_bond_edit(lmp);
   if (comm->me == 0)
     utils::logmesg(lmp, "{}: removed {} bonds crossing {} segment(s), new total = {}\n", CMD,
                    nbonds_previous - nbonds, cuts.size(), nbonds);

@@ -46,7 +46,7 @@ FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0),
       wvolume(nullptr), comm_a(nullptr), comm_b(nullptr)
 {
-  peridem_lmp::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
+  PERIDEM_NS::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
   restart_peratom = 1;
   comm_reverse = 2;
   // LAMMPS 29Sep2021 lists the fixes that may force a rebuild in
@@ -126,7 +126,7 @@ void FixPeridemBonds::collect()
   broken_here = 0;
   if (all == 0) return; // nothing to send home: ghost entries are still zero
   comm_mode = COUNTS;
-  peridem_lmp::reverse_comm(comm, this);
+  PERIDEM_NS::reverse_comm(comm, this);
   clear_ghosts();
   // every broken bond was counted once (see bond_broken): keep the global
   // bond count of write_data and thermo right
@@ -136,7 +136,7 @@ void FixPeridemBonds::collect()
   // neighbour list holds the pair and contact acts between the pieces
   if (force->newton_bond) {
     comm_mode = PARTNERS;
-    peridem_lmp::reverse_comm_variable(comm, this);
+    PERIDEM_NS::reverse_comm_variable(comm, this);
   }
   const int nlocal = atom->nlocal;
   for (const auto &[i, partners] : lost_partners)
@@ -386,14 +386,14 @@ void FixPeridemBonds::reverse_sum(double *a)
 {
   comm_mode = SUM;
   comm_a = a;
-  peridem_lmp::reverse_comm(comm, this, 1);
+  PERIDEM_NS::reverse_comm(comm, this, 1);
 }
 
 void FixPeridemBonds::forward(double *a, double *b)
 {
   comm_a = a;
   comm_b = b;
-  peridem_lmp::forward_comm(comm, this, 2);
+  PERIDEM_NS::forward_comm(comm, this, 2);
 }
 
 int FixPeridemBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
@@ -514,9 +514,9 @@ void FixPeridemBonds::check_damage_per_grain(const double *nb)
   const int nlocal = atom->nlocal;
   const tagint *molecule = atom->molecule;
   // per grain: nodes, broken bond ends
-  const tagint maxmol = peridem_lmp::max_grain_id(lmp);
+  const tagint maxmol = PERIDEM_NS::max_grain_id(lmp);
   const std::vector<double> grains =
-      peridem_lmp::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
+      PERIDEM_NS::grain_reduce(lmp, groupbit, maxmol, 2, [&](int i, double *row) {
         row[0] += 1.0;
         row[1] += nb[i];
       });

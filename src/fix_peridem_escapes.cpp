@@ -38,7 +38,7 @@ using namespace FixConst;
 
 FixPeridemEscapes::FixPeridemEscapes(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
-  peridem_lmp::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
+  PERIDEM_NS::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
   scalar_flag = 1; // nodes deleted with their bonds (thermo_modify lost ignore|warn)
   global_freq = 1;
   extscalar = 1;
@@ -76,7 +76,7 @@ void FixPeridemEscapes::check()
   double **x = atom->x;
   std::vector<int> doomed;
   for (int i = 0; i < atom->nlocal; i++) {
-    const int face = peridem_lmp::outside_fixed_boundary(domain, x[i]);
+    const int face = PERIDEM_NS::outside_fixed_boundary(domain, x[i]);
     if (face < 0) continue;
     if (lost_allowed) {
       doomed.push_back(i);
@@ -93,7 +93,7 @@ void FixPeridemEscapes::check()
   }
   if (!lost_allowed) return;
   // every rank takes part (the deletion communicates), with or without nodes of its own
-  const bigint gone = peridem_lmp::delete_nodes_breaking_bonds(lmp, doomed);
+  const bigint gone = PERIDEM_NS::delete_nodes_breaking_bonds(lmp, doomed);
   deleted_run += gone;
   deleted_total += gone;
 }

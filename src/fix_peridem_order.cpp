@@ -29,7 +29,7 @@ using namespace FixConst;
 
 FixPeridemOrder::FixPeridemOrder(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
-  peridem_lmp::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
+  PERIDEM_NS::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
 }
 
 int FixPeridemOrder::setmask()

@@ -32,14 +32,13 @@ using namespace FixConst;
 
 FixPeridemVelocityHistory *FixPeridemVelocityHistory::instance(LAMMPS *lmp, const char *caller)
 {
-  return peridem_lmp::own_fix<FixPeridemVelocityHistory>(lmp, "peridem/vhistory", caller);
+  return PERIDEM_NS::own_fix<FixPeridemVelocityHistory>(lmp, "peridem/vhistory", caller);
 }
 
 FixPeridemVelocityHistory::FixPeridemVelocityHistory(LAMMPS *lmp, int narg, char **arg)
     : Fix(lmp, narg, arg), vhalf(nullptr), vend(nullptr), known(nullptr)
 {
-  peridem_lmp::check_own_fix(lmp, narg, this, ID,
-                             "pair_style peridem/contact and fix peridem/wall");
+  PERIDEM_NS::check_own_fix(lmp, narg, this, ID, "pair_style peridem/contact and fix peridem/wall");
   restart_peratom = 1;
   comm_forward = 3;
   maxexchange = NVALUES;
@@ -81,7 +80,7 @@ void FixPeridemVelocityHistory::setup_pre_force(int)
     if (!same)
       for (int k = 0; k < 3; k++) vhalf[i][k] = v[i][k];
   }
-  peridem_lmp::forward_comm(comm, this);
+  PERIDEM_NS::forward_comm(comm, this);
   prepared = true;
   in_run = true;
 }

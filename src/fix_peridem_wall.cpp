@@ -68,7 +68,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       deleted_total(0), servo_any(0), var_any(0), in_setup(0), reduced(0), dissipated_local(0.0),
       lost_local(0)
 {
-  peridem_lmp::cite_grain_shape(lmp);
+  PERIDEM_NS::cite_grain_shape(lmp);
   scalar_flag = 1;
   vector_flag = 1;
   size_vector = PER_WALL * nwalls + 3;
@@ -93,7 +93,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
   if (!atom->vfrac_flag || !atom->rmass_flag)
     error->all(FLERR, "{} needs per-atom volumes and masses (atom_style peridem)", STYLE);
 
-  peridem_lmp::ContactParser parser(lmp, STYLE);
+  PERIDEM_NS::ContactParser parser(lmp, STYLE);
   int iarg = 3;
   auto need = [&](int n, const char *what) {
     if (iarg + n >= narg) error->all(FLERR, "{}: {} needs {} value(s)", STYLE, what, n);
@@ -116,13 +116,13 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
         wall.motion = Motion::Variable;
         var_any = 1;
       } else {
-        wall.pos = peridem_lmp::number(lmp, STYLE, "wall " + key, value);
+        wall.pos = PERIDEM_NS::number(lmp, STYLE, "wall " + key, value);
       }
       iarg += 2;
     } else if (key == "velocity") {
       need(2, "velocity");
       const int w = parse_face(arg[iarg + 1]);
-      walls[w].vel = peridem_lmp::number(lmp, STYLE, "velocity", arg[iarg + 2]);
+      walls[w].vel = PERIDEM_NS::number(lmp, STYLE, "velocity", arg[iarg + 2]);
       if (walls[w].motion != Motion::Fixed)
         error->all(FLERR, "{}: wall {} has a variable position or a servo and a velocity", STYLE,
                    FACES[w]);
@@ -136,9 +136,9 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
         error->all(FLERR, "{}: wall {} has a variable position or a velocity and a servo", STYLE,
                    FACES[w]);
       wall.motion = Motion::Servo;
-      wall.pressure = peridem_lmp::number(lmp, STYLE, "servo pressure", arg[iarg + 2]);
-      wall.gain = peridem_lmp::number(lmp, STYLE, "servo gain", arg[iarg + 3]);
-      wall.vmax = peridem_lmp::number(lmp, STYLE, "servo vmax", arg[iarg + 4]);
+      wall.pressure = PERIDEM_NS::number(lmp, STYLE, "servo pressure", arg[iarg + 2]);
+      wall.gain = PERIDEM_NS::number(lmp, STYLE, "servo gain", arg[iarg + 3]);
+      wall.vmax = PERIDEM_NS::number(lmp, STYLE, "servo vmax", arg[iarg + 4]);
       if (!(wall.pressure >= 0.0))
         error->all(FLERR, "{}: servo pressure must be >= 0, not {}", STYLE, arg[iarg + 2]);
       if (!(wall.gain > 0.0))
@@ -151,7 +151,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       need(4, "shear");
       const int w = parse_face(arg[iarg + 1]);
       for (int k = 0; k < 3; k++)
-        walls[w].shear[k] = peridem_lmp::number(lmp, STYLE, "shear", arg[iarg + 2 + k]);
+        walls[w].shear[k] = PERIDEM_NS::number(lmp, STYLE, "shear", arg[iarg + 2 + k]);
       if (walls[w].shear[w / 2] != 0.0)
         error->all(FLERR,
                    "{}: shear velocity of wall {} must lie in the wall (its {} component must be "
@@ -168,12 +168,12 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
       iarg += 2;
     } else if (key == "near_list") {
       need(1, "near_list");
-      near_list = peridem_lmp::choice(lmp, STYLE, "near_list", arg[iarg + 1], {"no", "yes"}) == 1;
+      near_list = PERIDEM_NS::choice(lmp, STYLE, "near_list", arg[iarg + 1], {"no", "yes"}) == 1;
       iarg += 2;
     } else if (key == "lost") {
       need(1, "lost");
       const int mode =
-          peridem_lmp::choice(lmp, STYLE, "lost", arg[iarg + 1], {"warn", "error", "delete"});
+          PERIDEM_NS::choice(lmp, STYLE, "lost", arg[iarg + 1], {"warn", "error", "delete"});
       lost_error = mode == 1;
       lost_delete = mode == 2;
       iarg += 2;
@@ -204,7 +204,7 @@ FixPeridemWall::FixPeridemWall(LAMMPS *lmp, int narg, char **arg)
   } else {
     contact = parser.finish(domain->dimension);
     if (comm->me == 0)
-      utils::logmesg(lmp, "{} {}: {}\n", STYLE, id, peridem_lmp::describe_contact(contact));
+      utils::logmesg(lmp, "{} {}: {}\n", STYLE, id, PERIDEM_NS::describe_contact(contact));
   }
   check_order("as given");
   check_periodic();
@@ -370,7 +370,7 @@ void FixPeridemWall::check_start()
   start_checked = true;
   update_variable_walls();
   const peridem::WallBox box = make_box();
-  peridem_lmp::OverlapReport near, beyond;
+  PERIDEM_NS::OverlapReport near, beyond;
   double rc_max = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -771,7 +771,7 @@ void FixPeridemWall::pre_exchange()
   double **x = atom->x;
   std::vector<int> doomed;
   for (int i = 0; i < atom->nlocal; i++) {
-    bool gone = peridem_lmp::outside_fixed_boundary(domain, x[i]) >= 0;
+    bool gone = PERIDEM_NS::outside_fixed_boundary(domain, x[i]) >= 0;
     if (!gone && (mask[i] & groupbit)) {
       const double Rc = contact_from_pair ? type_params[type[i]].Rc : contact.params.Rc;
       for (int w = 0; w < nwalls && !gone; w++)
@@ -779,7 +779,7 @@ void FixPeridemWall::pre_exchange()
     }
     if (gone) doomed.push_back(i);
   }
-  deleted_total += peridem_lmp::delete_nodes_breaking_bonds(lmp, doomed);
+  deleted_total += PERIDEM_NS::delete_nodes_breaking_bonds(lmp, doomed);
 }
 
 void FixPeridemWall::post_run()

@@ -83,7 +83,7 @@ class FixPeridemWall : public Fix {
   };
   Wall walls[peridem::kMaxWalls];
   int nwalls; // 2 * dimension
-  peridem_lmp::ContactSpec contact;
+  PERIDEM_NS::ContactSpec contact;
   // 'contact pair': the law of pair_style peridem/contact for the node's
   // type (pair_coeff I I), per atom type; empty otherwise
   bool contact_from_pair = false;
@@ -91,7 +91,7 @@ class FixPeridemWall : public Fix {
   class FixPeridemVelocityHistory *history = nullptr;
   std::vector<peridem::ContactParams> type_params;
   // contact pair: pair_coeff I I with damping centroid also damps grain centres at the walls
-  peridem_lmp::WallCentroidDamping centroid_damping;
+  PERIDEM_NS::WallCentroidDamping centroid_damping;
   double apply_centroid_damping(const double *vel);
   void add_wall_virial(int w, const double *xi, const double *fw, double *vir) const;
   int lost_error;       // 1: a node beyond a wall ends the run, 0: counted and warned

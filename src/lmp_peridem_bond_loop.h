@@ -23,7 +23,8 @@
 #ifndef LMP_PERIDEM_BOND_LOOP_H
 #define LMP_PERIDEM_BOND_LOOP_H
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // f[i] += (a0, a1, a2), f the flat force array
 inline void add_force(double *f, int i, double a0, double a1, double a2)
@@ -103,6 +104,7 @@ struct BondForces {
   }
 };
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -19,7 +19,8 @@
 #include "citeme.h"
 #include "lammps.h"
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // Bond-based grains, bond pruning, contact with friction and damping, walls, bed packings
 static const char cite_peridem_grain_shape[] =
@@ -54,6 +55,7 @@ inline void cite_peridem(LAMMPS_NS::LAMMPS *lmp)
   if (lmp->citeme) lmp->citeme->add(cite_peridem_2021);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

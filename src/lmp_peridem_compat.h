@@ -30,7 +30,8 @@
 #include <string>
 #include <vector>
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 namespace compat_detail {
 // LAMMPS 2022 and later: Neighbor::add_request(Pair *, int flags = 0) (chosen when it exists:
@@ -170,6 +171,7 @@ void request_half_neighbor_list(LAMMPS_NS::Neighbor *neighbor, PairT *pair, int 
   compat_detail::request_half(neighbor, pair, instance_me, 0);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

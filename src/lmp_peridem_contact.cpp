@@ -36,7 +36,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 ContactParser::ContactParser(LAMMPS *lmp_in, std::string command_in)
     : lmp(lmp_in), command(std::move(command_in))
@@ -46,7 +47,7 @@ ContactParser::ContactParser(LAMMPS *lmp_in, std::string command_in)
 double ContactParser::number(int narg, char **arg, int iarg, const char *what) const
 {
   if (iarg >= narg) lmp->error->all(FLERR, "{}: keyword {} needs a value", command, what);
-  return peridem_lmp::number(lmp, command, what, arg[iarg]);
+  return PERIDEM_NS::number(lmp, command, what, arg[iarg]);
 }
 
 double ContactParser::positive(int narg, char **arg, int iarg, const char *what) const
@@ -402,4 +403,5 @@ std::string describe_contact(const ContactSpec &spec)
                      describe_kn_form(spec.kn_form), spec.origin, p.Rc, damping, friction);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

@@ -53,7 +53,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // The parsed result: the law's parameters and what they were derived from.
 struct ContactSpec {
@@ -135,6 +136,7 @@ std::string describe_kn_form(peridem::KnForm form);
 // centroid damping also kappa and beta (per square root of m_eq) and where they came from.
 std::string describe_contact(const ContactSpec &spec);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -20,7 +20,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 tagint max_grain_id(LAMMPS *lmp)
 {
@@ -71,4 +72,5 @@ int gather_counts(MPI_Comm world, int n, std::vector<int> &counts, std::vector<i
   return total;
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

@@ -27,7 +27,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // Largest grain (molecule) ID on any rank; grain g has row g of the
 // reductions below (row 0 is unused: molecule IDs start at 1).
@@ -49,6 +50,7 @@ std::vector<double> gather_all(LAMMPS_NS::LAMMPS *lmp, const std::vector<double>
 // number of ranks); returns the total.
 int gather_counts(MPI_Comm world, int n, std::vector<int> &counts, std::vector<int> &displs);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

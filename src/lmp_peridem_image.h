@@ -21,7 +21,8 @@
 
 #include <cmath>
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // LAMMPS 29Sep2021's Domain::minimum_image subtracts one period at a time while the distance
 // exceeds half of it: a non-finite or huge distance (x0 = 1e30 from a data file) never ends
@@ -44,6 +45,7 @@ inline void minimum_image(LAMMPS_NS::Domain *domain, double &dx, double &dy, dou
   }
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

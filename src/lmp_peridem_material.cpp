@@ -27,7 +27,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 std::string read_text_file(LAMMPS *lmp, const std::string &command, const std::string &kind,
                            const std::string &file, bool potential)
@@ -95,4 +96,5 @@ const char *micromodulus_name(peridem::Micromodulus m)
   return m == peridem::Micromodulus::Conic ? "conic" : "constant";
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

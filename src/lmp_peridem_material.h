@@ -30,7 +30,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // The material NAME from FILE; `command` (e.g. "bond_coeff") names the
 // command in error messages. Errors end the run with a LAMMPS error.
@@ -51,6 +52,7 @@ peridem::Micromodulus parse_micromodulus(LAMMPS_NS::LAMMPS *lmp, const std::stri
                                          const std::string &word);
 const char *micromodulus_name(peridem::Micromodulus m);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -11,7 +11,8 @@
 
 #include <cstring>
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 void check_own_fix(LAMMPS_NS::LAMMPS *lmp, int narg, const LAMMPS_NS::Fix *fix, const char *own_id,
                    const char *creator)
@@ -25,4 +26,5 @@ void check_own_fix(LAMMPS_NS::LAMMPS *lmp, int narg, const LAMMPS_NS::Fix *fix, 
                     fix->style, creator, own_id, fix->id);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

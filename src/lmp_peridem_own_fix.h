@@ -23,7 +23,8 @@
 
 #include <string>
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // The fix F (of style `style`, ID F::ID), created at the first call; an existing fix of that
 // ID and another style ends the run with an error naming `caller`.
@@ -42,6 +43,7 @@ template <typename F> F *own_fix(LAMMPS_NS::LAMMPS *lmp, const char *style, cons
 void check_own_fix(LAMMPS_NS::LAMMPS *lmp, int narg, const LAMMPS_NS::Fix *fix, const char *own_id,
                    const char *creator);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -22,7 +22,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 int choice(LAMMPS *lmp, const std::string &command, const std::string &keyword,
            const std::string &value, std::initializer_list<const char *> options)
@@ -80,4 +81,5 @@ int integer(LAMMPS *lmp, const std::string &command, const std::string &keyword,
   return static_cast<int>(v);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

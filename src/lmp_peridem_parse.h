@@ -21,7 +21,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // The position of `value` among `options` (e.g. {"no", "yes"}); otherwise a
 // LAMMPS error "<command>: <keyword> must be a, b or c, not <value>".
@@ -49,6 +50,7 @@ long long integer(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std:
 int integer(LAMMPS_NS::LAMMPS *lmp, const std::string &command, const std::string &keyword,
             const char *value, int lo, int hi);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

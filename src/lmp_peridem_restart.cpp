@@ -28,7 +28,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 void write_restart_tag(FILE *fp, RestartTag tag)
 {
@@ -165,4 +166,5 @@ peridem::ContactParams read_contact_params(LAMMPS *lmp, FILE *fp, const char *st
   return contact_from_fields(v);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

@@ -23,7 +23,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // Restart sections of the PERIDEM force styles start with a tag that names
 // the style and the version of its format. A file of another format (an
@@ -67,6 +68,7 @@ void check_restart_values(LAMMPS_NS::LAMMPS *lmp, const char *style, const char 
                           const int *values, int n, int lo, int hi);
 peridem::ContactParams read_contact_params(LAMMPS_NS::LAMMPS *lmp, FILE *fp, const char *style);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

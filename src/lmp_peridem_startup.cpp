@@ -29,7 +29,8 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 void OverlapReport::add(tagint grain, const std::string &partner)
 {
@@ -104,4 +105,5 @@ void check_neighbor_skin(LAMMPS *lmp, const std::string &style, double cutoff)
                       std::max(0.0, reach - cutoff));
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

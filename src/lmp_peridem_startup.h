@@ -35,7 +35,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // Collects the overlapping pairs seen on one rank (a grain ID and a partner: another grain's
 // ID or a wall name) and reports them on all ranks together.
@@ -69,6 +70,7 @@ double half_list_partners(int dimension, double reach, double volume);
 // more than `neigh_modify one` partners for a node of the smallest nodal volume.  Collective.
 void check_neighbor_skin(LAMMPS_NS::LAMMPS *lmp, const std::string &style, double cutoff);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

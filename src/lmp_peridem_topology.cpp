@@ -30,7 +30,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 bigint finish_bond_edit(LAMMPS *lmp)
 {
@@ -67,7 +68,7 @@ bigint delete_nodes(LAMMPS *lmp, std::vector<int> doomed,
   for (int i : doomed) mine.push_back(atom->tag[i]);
   const int nmine = static_cast<int>(mine.size());
   std::vector<int> counts, displs;
-  const int ngone = peridem_lmp::gather_counts(world, nmine, counts, displs);
+  const int ngone = PERIDEM_NS::gather_counts(world, nmine, counts, displs);
   if (ngone == 0) return 0;
   std::vector<tagint> gone(ngone);
   MPI_Allgatherv(mine.data(), nmine, MPI_LMP_TAGINT, gone.data(), counts.data(), displs.data(),
@@ -131,4 +132,5 @@ bigint delete_nodes_breaking_bonds(LAMMPS *lmp, std::vector<int> doomed)
   });
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

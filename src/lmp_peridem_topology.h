@@ -29,7 +29,8 @@ class Domain;
 class LAMMPS;
 } // namespace LAMMPS_NS
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // Recounts atom->nbonds on all ranks (bonds stored twice when newton_bond
 // is off count once) and rebuilds the special lists. Returns the new total.
@@ -55,6 +56,7 @@ LAMMPS_NS::bigint delete_nodes(LAMMPS_NS::LAMMPS *lmp, std::vector<int> doomed,
 // peridem/wall 'lost delete' delete escaping nodes so.
 LAMMPS_NS::bigint delete_nodes_breaking_bonds(LAMMPS_NS::LAMMPS *lmp, std::vector<int> doomed);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -19,7 +19,8 @@
 
 using LAMMPS_NS::tagint;
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 void WallCentroidDamping::set_types(const std::vector<peridem::ContactParams> &params,
                                     const std::vector<double> &reach)
@@ -50,7 +51,7 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
   std::sort(touch_local.begin(), touch_local.end());
   touch_local.erase(std::unique(touch_local.begin(), touch_local.end(), same), touch_local.end());
   const int mine = 3 * (int)touch_local.size();
-  const int total = peridem_lmp::gather_counts(world, mine, counts, displs);
+  const int total = LAMMPS_NS::PERIDEM_NS::gather_counts(world, mine, counts, displs);
   if (total == 0) return 0.0;
   touch_all.resize(total / 3);
   MPI_Allgatherv(touch_local.empty() ? nullptr : touch_local[0].data(), mine, MPI_LMP_TAGINT,
@@ -116,4 +117,5 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
   return lmp->comm->me == 0 ? power : 0.0;
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

@@ -41,7 +41,8 @@ namespace LAMMPS_NS {
 class LAMMPS;
 }
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 class WallCentroidDamping {
  public:
@@ -77,6 +78,7 @@ class WallCentroidDamping {
   std::vector<double> sum_local, sum_all, force; // per grain: M, M v; per touch: F
 };
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

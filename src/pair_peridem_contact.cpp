@@ -63,8 +63,8 @@ const char *const STYLE = "pair_style peridem/contact";
 PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
     : Pair(lmp), cut(nullptr), self_contact(1), dissipated(0.0), centroid_on(0), grains_stale(true)
 {
-  peridem_lmp::cite_grain_shape(lmp);
-  peridem_lmp::cite_peridem(lmp);
+  PERIDEM_NS::cite_grain_shape(lmp);
+  PERIDEM_NS::cite_peridem(lmp);
   restartinfo = 1;
   single_enable = 1;
   writedata = 0;
@@ -148,7 +148,7 @@ bool PairPeridemContact::pair_input(int i, int j, peridem::ContactInput &in) con
     if (!self_contact) return false;
     const double *x0i = atom->x0[0] + 3 * i, *x0j = atom->x0[0] + 3 * j;
     double d0[3] = {x0j[0] - x0i[0], x0j[1] - x0i[1], x0j[2] - x0i[2]};
-    peridem_lmp::minimum_image(domain, d0[0], d0[1], d0[2]);
+    PERIDEM_NS::minimum_image(domain, d0[0], d0[1], d0[2]);
     in.ref_dist = std::sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
   }
   for (int k = 0; k < 3; k++) {
@@ -226,7 +226,7 @@ void PairPeridemContact::compute(int eflag, int vflag)
     const double dz = xj[2] - xi[2];
     const double rsq = dx * dx + dy * dy + dz * dz;
     if (rsq >= cutsq[itype][jtype]) continue;
-    const peridem_lmp::ContactSpec &sp = spec[itype][jtype];
+    const PERIDEM_NS::ContactSpec &sp = spec[itype][jtype];
 
     // two grains touch (closer than R_c, or centroid_range): damping
     // centroid of this grain pair (Jha et al. 2021, eq. 27)
@@ -242,9 +242,9 @@ void PairPeridemContact::compute(int eflag, int vflag)
     const peridem::ContactResult res = peridem::contact_force(in, sp.params);
     if (!res.contact) continue;
 
-    peridem_lmp::add_force(f, i, res.f[0], res.f[1], res.f[2]);
+    PERIDEM_NS::add_force(f, i, res.f[0], res.f[1], res.f[2]);
     const bool both = newton || j < nlocal;
-    if (both) peridem_lmp::add_force(f, j, -res.f[0], -res.f[1], -res.f[2]);
+    if (both) PERIDEM_NS::add_force(f, j, -res.f[0], -res.f[1], -res.f[2]);
     // a pair across ranks with newton off is computed on both ranks
     dissipated_now -= res.power * dt * (both ? 1.0 : 0.5);
     if (evflag)
@@ -391,7 +391,7 @@ void PairPeridemContact::add_bounding_touches()
       for (int k = 0; k < 3; k++) sep[k] = sb[1 + k] / sb[0] - sa[1 + k] / sa[0];
       if (sweep && sep[0] > bounding[a] + b_max + reach_max) break;
       const int ta = grain_type[a], tb = grain_type[b];
-      const peridem_lmp::ContactSpec &sp = spec[ta][tb];
+      const PERIDEM_NS::ContactSpec &sp = spec[ta][tb];
       if (!sp.centroid || !(sp.centroid_bounding > 0.0)) continue;
       domain->minimum_image(sep[0], sep[1], sep[2]);
       const double d = bounding[a] + bounding[b] + sp.centroid_bounding * sp.params.Rc;
@@ -454,7 +454,7 @@ void PairPeridemContact::compute_bounding_radii()
 
 int PairPeridemContact::gather_counts(int n)
 {
-  return peridem_lmp::gather_counts(world, n, counts, displs);
+  return PERIDEM_NS::gather_counts(world, n, counts, displs);
 }
 
 /* ----------------------------------------------------------------------
@@ -552,7 +552,7 @@ void PairPeridemContact::settings(int narg, char **arg)
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword {} needs a value", STYLE, key);
     const std::string value = arg[iarg + 1];
     if (key == "self") {
-      self_contact = peridem_lmp::yes_no(lmp, STYLE, key, value);
+      self_contact = PERIDEM_NS::yes_no(lmp, STYLE, key, value);
     } else
       error->all(FLERR, "{}: unknown keyword {}", STYLE, key);
   }
@@ -573,7 +573,7 @@ void PairPeridemContact::allocate()
       setflag[i][j] = 0;
       cut[i][j] = touchsq[i][j] = 0.0;
     }
-  spec.assign(n, std::vector<peridem_lmp::ContactSpec>(n));
+  spec.assign(n, std::vector<PERIDEM_NS::ContactSpec>(n));
 }
 
 /* ----------------------------------------------------------------------
@@ -588,8 +588,8 @@ void PairPeridemContact::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const peridem_lmp::ContactSpec s =
-      peridem_lmp::parse_contact(lmp, "pair_coeff", narg - 2, &arg[2], domain->dimension, true);
+  const PERIDEM_NS::ContactSpec s =
+      PERIDEM_NS::parse_contact(lmp, "pair_coeff", narg - 2, &arg[2], domain->dimension, true);
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = std::max(jlo, i); j <= jhi; j++) {
@@ -599,7 +599,7 @@ void PairPeridemContact::coeff(int narg, char **arg)
     }
   if (count == 0) error->all(FLERR, "pair_coeff: no type pairs in {} {}", arg[0], arg[1]);
   if (comm->me == 0)
-    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, arg[0], arg[1], peridem_lmp::describe_contact(s));
+    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, arg[0], arg[1], PERIDEM_NS::describe_contact(s));
 }
 
 /* ----------------------------------------------------------------------
@@ -613,8 +613,8 @@ void PairPeridemContact::mix(int i, int j)
   if (!setflag[i][i] || !setflag[j][j])
     error->all(FLERR, "{}: pair_coeff {} {} is not set and cannot be mixed from {} {} and {} {}",
                STYLE, i, j, i, i, j, j);
-  const peridem_lmp::ContactSpec &a = spec[i][i], &b = spec[j][j];
-  peridem_lmp::ContactSpec m = a;
+  const PERIDEM_NS::ContactSpec &a = spec[i][i], &b = spec[j][j];
+  PERIDEM_NS::ContactSpec m = a;
   peridem::ContactParams &p = m.params;
   if (a.params.damping != b.params.damping || a.params.friction != b.params.friction ||
       a.centroid != b.centroid)
@@ -654,13 +654,13 @@ void PairPeridemContact::mix(int i, int j)
   m.kappa_origin = fmt::format("harmonic mean of types {} and {}, Jha et al. 2021 eq. 25", i, j);
   spec[i][j] = spec[j][i] = m;
   if (comm->me == 0)
-    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, i, j, peridem_lmp::describe_contact(m));
+    utils::logmesg(lmp, "{} {} {}: {}\n", STYLE, i, j, PERIDEM_NS::describe_contact(m));
 }
 
 double PairPeridemContact::init_one(int i, int j)
 {
   if (!setflag[i][j]) mix(i, j);
-  const peridem_lmp::ContactSpec &s = spec[i][j];
+  const PERIDEM_NS::ContactSpec &s = spec[i][j];
   const double touch = s.centroid && s.centroid_bounding == 0.0 ? s.centroid_reach() : 0.0;
   if (s.centroid && s.centroid_bounding > 0.0) bounding_on = 1;
   touchsq[i][j] = touchsq[j][i] = touch * touch;
@@ -715,14 +715,14 @@ void PairPeridemContact::init_style()
   // damping, friction and the centroid dashpot take v: a run's setup must see the v(n - 1/2)
   // of the step it continues (fix peridem/vhistory)
   history = dissipative || centroid_on ? FixPeridemVelocityHistory::instance(lmp, STYLE) : nullptr;
-  peridem_lmp::request_half_neighbor_list(neighbor, this, instance_me);
+  PERIDEM_NS::request_half_neighbor_list(neighbor, this, instance_me);
   double reach = 0.0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j])
         reach = std::max(
             {reach, spec[i][j].params.Rc, spec[i][j].centroid ? spec[i][j].centroid_reach() : 0.0});
-  peridem_lmp::check_neighbor_skin(lmp, STYLE, reach);
+  PERIDEM_NS::check_neighbor_skin(lmp, STYLE, reach);
 }
 
 /* ----------------------------------------------------------------------
@@ -744,7 +744,7 @@ void PairPeridemContact::report_start_overlaps()
   double **x = atom->x;
   const tagint *molecule = atom->molecule;
   const int *type = atom->type;
-  peridem_lmp::OverlapReport overlaps;
+  PERIDEM_NS::OverlapReport overlaps;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -806,7 +806,7 @@ void PairPeridemContact::report_time_step()
       in.node_volume = std::max(-a[1], -b[1]);
       in.rho = std::min(a[2], b[2]);
       in.bond_omega2 = std::max(bond_omega2[i], bond_omega2[j]);
-      in.walls = peridem_lmp::has_fix_style(modify, "^peridem/wall");
+      in.walls = PERIDEM_NS::has_fix_style(modify, "^peridem/wall");
       in.wall_laws = wall_laws;
       in.Kn = p.Kn;
       in.Rc = p.Rc;
@@ -876,14 +876,14 @@ std::string PairPeridemContact::wall_law_note(const std::vector<std::array<doubl
 
 void PairPeridemContact::write_restart(FILE *fp)
 {
-  peridem_lmp::write_restart_tag(fp, peridem_lmp::RESTART_PAIR_CONTACT);
+  PERIDEM_NS::write_restart_tag(fp, PERIDEM_NS::RESTART_PAIR_CONTACT);
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (!setflag[i][j]) continue;
-      const peridem_lmp::ContactSpec &s = spec[i][j];
-      peridem_lmp::write_contact_params(fp, s.params);
+      const PERIDEM_NS::ContactSpec &s = spec[i][j];
+      PERIDEM_NS::write_contact_params(fp, s.params);
       const double extra[7] = {s.bulk_modulus,     s.horizon,
                                s.density,          s.centroid ? 1.0 : 0.0,
                                s.centroid_range,   (double)peridem::kn_exponent(s.kn_form),
@@ -897,7 +897,7 @@ void PairPeridemContact::read_restart(FILE *fp)
   // format 2 writes the parameters field by field; format 3 adds centroid_bounding (0 in
   // files of format 2)
   const int format =
-      peridem_lmp::read_restart_version(lmp, fp, peridem_lmp::RESTART_PAIR_CONTACT, 2, STYLE);
+      PERIDEM_NS::read_restart_version(lmp, fp, PERIDEM_NS::RESTART_PAIR_CONTACT, 2, STYLE);
   read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++)
@@ -905,17 +905,17 @@ void PairPeridemContact::read_restart(FILE *fp)
       if (comm->me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (!setflag[i][j]) continue;
-      peridem_lmp::ContactSpec &s = spec[i][j];
-      s.params = peridem_lmp::read_contact_params(lmp, fp, STYLE);
+      PERIDEM_NS::ContactSpec &s = spec[i][j];
+      s.params = PERIDEM_NS::read_contact_params(lmp, fp, STYLE);
       double extra[7] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       const int nextra = format >= 3 ? 7 : 6;
       if (comm->me == 0) utils::sfread(FLERR, extra, sizeof(double), nextra, fp, nullptr, error);
       MPI_Bcast(extra, nextra, MPI_DOUBLE, 0, world);
       constexpr double big = std::numeric_limits<double>::max();
-      peridem_lmp::check_restart_values(lmp, STYLE, "material constants", extra, 3, 0.0, big);
-      peridem_lmp::check_restart_values(lmp, STYLE, "centroid settings", extra + 3, 2, 0.0, big);
-      peridem_lmp::check_restart_values(lmp, STYLE, "Kn form", extra + 5, 1, 4.0, 5.0);
-      peridem_lmp::check_restart_values(lmp, STYLE, "centroid settings", extra + 6, 1, 0.0, big);
+      PERIDEM_NS::check_restart_values(lmp, STYLE, "material constants", extra, 3, 0.0, big);
+      PERIDEM_NS::check_restart_values(lmp, STYLE, "centroid settings", extra + 3, 2, 0.0, big);
+      PERIDEM_NS::check_restart_values(lmp, STYLE, "Kn form", extra + 5, 1, 4.0, 5.0);
+      PERIDEM_NS::check_restart_values(lmp, STYLE, "centroid settings", extra + 6, 1, 0.0, big);
       s.bulk_modulus = extra[0];
       s.horizon = extra[1];
       s.density = extra[2];
@@ -979,7 +979,7 @@ void *PairPeridemContact::extract(const char *str, int &dim)
 
 double PairPeridemContact::memory_usage()
 {
-  return Pair::memory_usage() + spec.size() * spec.size() * sizeof(peridem_lmp::ContactSpec) +
+  return Pair::memory_usage() + spec.size() * spec.size() * sizeof(PERIDEM_NS::ContactSpec) +
          (grain_local.capacity() + grain_sum.capacity() + grain_force.capacity()) * sizeof(double) +
          (grain_table.capacity() + grain_of.capacity()) * sizeof(int) +
          grain_ids.capacity() * sizeof(tagint);

@@ -51,7 +51,7 @@ class PairPeridemContact : public Pair {
   void *extract(const char *, int &) override;
 
   // the contact law of a type pair (after pair_coeff), e.g. for walls
-  const peridem_lmp::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
+  const PERIDEM_NS::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
   bool type_set(int i, int j) const { return allocated && setflag[i][j]; }
   // node pairs i, j of different grains closer than their contact radius R_c, from the
   // neighbour list of the last force computation (i owned, j owned or ghost), for compute
@@ -63,7 +63,7 @@ class PairPeridemContact : public Pair {
   // the contact law's input for atoms i, j; false: same grain, self-contact off
   bool pair_input(int i, int j, peridem::ContactInput &in) const;
   // contact law of each type pair, index [i][j] with 1 <= i, j <= ntypes
-  std::vector<std::vector<peridem_lmp::ContactSpec>> spec;
+  std::vector<std::vector<PERIDEM_NS::ContactSpec>> spec;
   double **cut;      // contact radius of each type pair (or centroid_range)
   double **touchsq;  // squared distance below which grains touch (damping centroid)
   int self_contact;  // 1: nodes of one grain without an intact bond touch too

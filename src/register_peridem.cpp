@@ -72,7 +72,8 @@ template <typename T> Command *command_creator(LAMMPS *lmp)
 
 } // namespace
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 // One line per style: the only list of PERIDEM styles (register_styles
 // and peridemplugin.so both read it).
@@ -99,4 +100,5 @@ void for_each_style(StyleSink &sink)
   sink.command("create_peridem_bed", &command_creator<CreatePeridemBed>);
 }
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS

@@ -26,7 +26,8 @@ class Compute;
 class Command;
 } // namespace LAMMPS_NS
 
-namespace peridem_lmp {
+namespace LAMMPS_NS {
+namespace PERIDEM_NS {
 
 /* The creators LAMMPS's style maps hold (Atom::AtomVecCreator, Force::BondCreator, ...). */
 using AtomVecCreator = LAMMPS_NS::AtomVec *(*)(LAMMPS_NS::LAMMPS *);
@@ -51,6 +52,7 @@ class StyleSink {
 /* The list of PERIDEM styles, shared by register_styles() and the plugin. */
 void for_each_style(StyleSink &sink);
 
-} // namespace peridem_lmp
+} // namespace PERIDEM_NS
+} // namespace LAMMPS_NS
 
 #endif

@@ -188,8 +188,8 @@ TEST_F(AtomStylePeridem, CreateAtomsSetsReferencePositionToPosition)
 
 TEST(PeridemRegistration, VersionStringsMustMatch)
 {
-  EXPECT_TRUE(peridem_lmp::version_mismatch_message(LAMMPS_VERSION, LAMMPS_VERSION).empty());
-  const std::string msg = peridem_lmp::version_mismatch_message("29 Sep 2021", "7 Feb 2024");
+  EXPECT_TRUE(PERIDEM_NS::version_mismatch_message(LAMMPS_VERSION, LAMMPS_VERSION).empty());
+  const std::string msg = PERIDEM_NS::version_mismatch_message("29 Sep 2021", "7 Feb 2024");
   EXPECT_NE(msg.find("compiled against LAMMPS version '29 Sep 2021'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("'7 Feb 2024'"), std::string::npos) << msg;
   EXPECT_STREQ(peridem_lammps_version(), LAMMPS_VERSION);
@@ -205,7 +205,7 @@ TEST(PeridemRegistrationDeathTest, OtherLammpsVersionIsRefused)
         dup2(STDERR_FILENO, STDOUT_FILENO);
         try {
           LAMMPS *lmp = make_lammps({}, true);
-          peridem_lmp::register_styles(lmp, "1 Jan 2000");
+          PERIDEM_NS::register_styles(lmp, "1 Jan 2000");
         } catch (LAMMPSException &) {
           exit(1);
         }
