@@ -10,7 +10,7 @@
 # Builds LAMMPS 4 Feb 2025 (the source of Debian 13 "trixie", lammps 20250204+dfsg.1-2)
 # outside the repository and checks PERIDEM against it, three ways:
 #   1. out of tree: libperidem, lmp_peridem and the LAMMPS-level tests (ctest) built
-#      against a LAMMPS with MOLECULE, PERI and PLUGIN;
+#      against a LAMMPS with MOLECULE, PERI, RIGID (examples/rigid-grains) and PLUGIN;
 #   2. as a plugin: peridemplugin.so loaded with `plugin load` into that LAMMPS's lmp;
 #   3. in tree: src/ copied to lammps/src/PERIDEM and built into LAMMPS through
 #      its CMake package mechanism (PKG_PERIDEM, cmake/Modules/Packages/PERIDEM.cmake);
@@ -76,12 +76,15 @@ configure_lammps() { # ON|OFF: PERIDEM in tree or not
   cmake -S "$src/cmake" -B "$build" -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="${PERIDEM_LAMMPS_OPT:--O1} -DNDEBUG" -DBUILD_SHARED_LIBS=ON \
     -DBUILD_MPI=ON -DBUILD_OMP=OFF -DWITH_JPEG=OFF -DWITH_PNG=OFF \
-    -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON -DPKG_PERI=ON -DPKG_PLUGIN=ON -DPKG_PERIDEM="$1"
+    -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON -DPKG_PERI=ON -DPKG_RIGID=ON -DPKG_PLUGIN=ON \
+    -DPKG_PERIDEM="$1"
 }
 
 lammps() { # plain LAMMPS 2025 (the long part: about 600 files), built once
-  # LAMMPS's source never changes here: its install is the cache (delete it to rebuild)
-  if [ -x "$plain/bin/lmp" ]; then
+  # LAMMPS's source never changes here: its install is the cache (delete it to rebuild); a
+  # cache from before RIGID was in the package list is built again
+  if [ -x "$plain/bin/lmp" ] &&
+    LD_LIBRARY_PATH="$plain/lib:${LD_LIBRARY_PATH:-}" "$plain/bin/lmp" -h 2>/dev/null | grep -w RIGID >/dev/null; then
     echo "cached: $plain (delete it to build LAMMPS again)"
     return 0
   fi
