@@ -65,7 +65,7 @@ foreach(_f ${_peridem_all_sources})
 endforeach()
 
 add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver/post_create_hook.cpp
-  ${PROJECT_SOURCE_DIR}/driver/register_driver.cpp)
+  ${PROJECT_SOURCE_DIR}/driver/register_driver.cpp ${PROJECT_SOURCE_DIR}/driver/register_peridem.cpp)
 # the chunked bond loop of bond_peridem.cpp vectorises its square roots only
 # without errno (they take sums of squares, never negative); no FMA contraction,
 # so that its AVX-512 clone (which has FMA) gives the one-by-one loop's bits; the same for

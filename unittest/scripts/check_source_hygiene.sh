@@ -11,7 +11,8 @@
 #  - no M_PI (LAMMPS glue: MathConst::MY_PI; core: peridem::kPi in peridem_math.h),
 #    no GCC builtins, no LAMMPS_VERSION_NUMBER (not a LAMMPS macro);
 #  - papers cited by author and year, not by project shorthand;
-#  - the LAMMPS-free core (src/peridem_*) includes no LAMMPS header.
+#  - the LAMMPS-free core (src/peridem_*) includes no LAMMPS header;
+#  - the style macros of src/*.h list the styles of driver/register_peridem.cpp.
 # Usage: check_source_hygiene.sh REPO_ROOT. Prints PERIDEM-PASS or the offending lines.
 set -uo pipefail
 root="${1:?usage: check_source_hygiene.sh REPO_ROOT}"
@@ -40,6 +41,15 @@ for f in peridem_*.cpp peridem_*.h; do
     esac
   done
 done
+# the styles a LAMMPS tree registers (the *Style(...) macros of src/*.h) are the ones the
+# stand-alone routes register (for_each_style() in driver/register_peridem.cpp)
+macros="$(sed -n 's/^\([A-Z][a-z]*\)Style(\([^,]*\),\([A-Za-z]*\));.*/\1 \2 \3/p' -- *.h |
+  sed 's/^Atom /atom /; s/^Bond /bond /; s/^Pair /pair /; s/^Fix /fix /; s/^Compute /compute /; s/^Command /command /' | sort)"
+listed="$(sed -n 's/^ *sink\.\([a-z]*\)("\([^"]*\)", &[a-z_]*<\([A-Za-z]*\)>);.*/\1 \2 \3/p' \
+  "$root/driver/register_peridem.cpp" | sort)"
+report "style macros in src/*.h (<) and for_each_style() in driver/register_peridem.cpp (>) differ" \
+  "$(diff <(echo "$macros") <(echo "$listed") | grep '^[<>]')"
+[ -n "$macros" ] || report "no style macro found in src/*.h" "(none)"
 if [ $bad -eq 0 ]; then
   echo "PERIDEM-PASS source hygiene of src/"
   exit 0

@@ -23,7 +23,7 @@ grep -q "atom style peridem: registered" host.out || { echo "FAIL: no atom style
 n=$(grep -c "^plugin style: " host.out)
 # every style of for_each_style() but the atom style (counted from its list,
 # so that a new style needs no edit here)
-want=$(grep -c '^ *sink\.\(bond\|pair\|fix\|compute\|command\)(' "$here/../../src/register_peridem.cpp")
+want=$(grep -c '^ *sink\.\(bond\|pair\|fix\|compute\|command\)(' "$here/../../driver/register_peridem.cpp")
 [ "$n" -eq "$want" ] || { echo "FAIL: $n plugin styles registered, expected $want (+ the atom style)"; exit 1; }
 grep -q "PLUGIN-HOST-OK" host.out || { echo "FAIL: the input did not complete"; exit 1; }
 mpirun -np "$np" "$lmp" -in "$input" -var potentials "$pot" -log log.driver -echo none -screen none

@@ -10,8 +10,9 @@
 /* ----------------------------------------------------------------------
    PERIDEM: the list of all PERIDEM styles (for_each_style), read by the
    routes that register them without LAMMPS's style headers: lmp_peridem and
-   libperidem (driver/register_driver.cpp) and peridemplugin.so. In a LAMMPS
-   source tree the style headers register them and this list is unused.
+   libperidem (driver/register_driver.cpp) and peridemplugin.so. Not part of
+   src/: in a LAMMPS source tree the style headers register the styles
+   (their *Style(...) macros), so a new style goes both there and here.
 ------------------------------------------------------------------------- */
 
 #include "register_peridem.h"
