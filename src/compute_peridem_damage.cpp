@@ -129,8 +129,8 @@ void ComputePeridemDamage::refresh()
   // every break), not once per output (half of this compute's time in in.peri_impact). A bond
   // breaks on one rank only, and counting communicates: all ranks count again if one must.
   const bigint stamp = bonds_fix->change_stamp();
-  const int stale_here =
-      !(refreshed && refreshed_step == update->ntimestep && refreshed_stamp == stamp);
+  // not const: the send buffers of LAMMPS's serial MPI stubs (STUBS/mpi.h) are void *
+  int stale_here = !(refreshed && refreshed_step == update->ntimestep && refreshed_stamp == stamp);
   int stale = 0;
   MPI_Allreduce(&stale_here, &stale, 1, MPI_INT, MPI_MAX, world);
   if (!stale) return;

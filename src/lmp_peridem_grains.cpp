@@ -52,8 +52,9 @@ std::vector<double> gather_all(LAMMPS *lmp, const std::vector<double> &mine)
   const int count = int(mine.size());
   std::vector<int> counts, displs;
   std::vector<double> all(size_t(gather_counts(lmp->world, count, counts, displs)));
-  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, lmp->world);
+  // const_cast: the send buffer of LAMMPS's serial MPI stubs (STUBS/mpi.h) is a void *
+  MPI_Allgatherv(const_cast<double *>(mine.data()), count, MPI_DOUBLE, all.data(), counts.data(),
+                 displs.data(), MPI_DOUBLE, lmp->world);
   return all;
 }
 

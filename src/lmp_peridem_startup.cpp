@@ -43,8 +43,9 @@ void OverlapReport::add(tagint grain, const std::string &partner)
 
 bigint OverlapReport::total(LAMMPS *lmp) const
 {
-  bigint all = 0;
-  MPI_Allreduce(&count, &all, 1, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
+  // a copy: the send buffers of LAMMPS's serial MPI stubs (STUBS/mpi.h) are void *
+  bigint mine = count, all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, lmp->world);
   return all;
 }
 
