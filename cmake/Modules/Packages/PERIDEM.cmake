@@ -36,7 +36,8 @@ set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -We
 # (GCC 12: no sqrtpd at -O1/-O2/-O3 without -fno-math-errno, nor at -O2 without -ftree-vectorize).
 # No FMA contraction, so that its AVX-512 clone gives the one-by-one loop's bits
 # (tested: ChunkedLoopEqualsOneByOne). The stand-alone build (cmake/PeridemLAMMPS.cmake,
-# -O3) sets the same flags. This file only, so that LAMMPS's own files keep LAMMPS's flags.
+# -O3) and the traditional make build (src/Makefile.lammps) set the same flags. These files
+# only, so that LAMMPS's own files keep LAMMPS's flags.
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   # bond_peridem_base.cpp: the break path and reference lengths the bond loops share
   set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp
