@@ -14,12 +14,14 @@
 #   2. as a plugin: peridemplugin.so loaded with `plugin load` into that LAMMPS's lmp;
 #   3. in tree: src/ copied to lammps/src/PERIDEM and built into LAMMPS through
 #      its CMake package mechanism (PKG_PERIDEM, cmake/Modules/Packages/PERIDEM.cmake);
-#   then the LAMMPS-level tests of 1. again through the in-tree lmp and the plugin.
+#   then the LAMMPS-level tests of 1. again through the in-tree lmp and the plugin;
+#   4. in tree with the traditional make build (`intree-make`): src/ copied to src/PERIDEM of a
+#      second, make-only copy of the LAMMPS tree, `make yes-peridem` and `make mpi`.
 # Everything is cached under $PERIDEM_LAMMPS2025_DIR (default /opt/peridem/lammps-2025):
 # a second call only rebuilds what changed. Usage:
 #   scripts/build_lammps_2025.sh [stage ...]     stages: fetch lammps outoftree reference plugin intree
-#                                                 intree-tests plugin-tests
-# (default: all, in that order). Logs: $PERIDEM_LAMMPS2025_DIR/logs/. Exit code 0 when
+#                                                 intree-tests plugin-tests intree-make
+# (default: all but intree-make, in that order). Logs: $PERIDEM_LAMMPS2025_DIR/logs/. Exit code 0 when
 # every stage passed.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -30,6 +32,7 @@ build="$root/build"              # LAMMPS build folder (shared by the plain and 
 plain="$root/install-plain"      # LAMMPS without PERIDEM
 intree="$root/install-peridem"   # LAMMPS with PERIDEM in tree
 pbuild="$root/peridem-build"     # this repository built against $plain
+mtree="$root/make-tree"          # a second LAMMPS tree, for the traditional make build only
 jobs="${PERIDEM_JOBS:-2}"
 logs="$root/logs"
 mkdir -p "$root" "$logs"
@@ -247,6 +250,85 @@ EOF
     --output-on-failure ${PERIDEM_CTEST_ARGS:-})
 }
 intree-tests() { route_tests intree; }
+
+# src/ as the PERIDEM package of LAMMPS's traditional make build, in a copy of the LAMMPS tree
+# of its own (the CMake build folder of $src stays as it is): `make yes-molecule yes-peri
+# yes-peridem` (src/Install.sh), `make mpi` (serial when mpi fails), no warning in PERIDEM's
+# files, the per-file flags of src/Makefile.lammps on the bond styles' compile lines, and the
+# all_styles.in thermo output of lmp_peridem. LAMMPS's own flags but -O3: ${PERIDEM_LAMMPS_OPT:--O1}
+# (and no -g), as the CMake route. PERIDEM's objects are compiled on every run, so that the
+# warning count covers all of them; LAMMPS's stay.
+intree-make() {
+  local t="$mtree/lammps-4Feb2025" f b machine="" pkg
+  if [ ! -f "$t/src/Makefile" ]; then
+    rm -rf "$mtree" && mkdir -p "$mtree"
+    tar -C "$mtree" -xf "$root/lammps_${version%-*}.orig.tar.xz" lammps-4Feb2025/src lammps-4Feb2025/lib
+  fi
+  pkg="$t/src/PERIDEM"
+  mkdir -p "$pkg"
+  for f in "$pkg"/*; do # files no longer in src/, and their installed copies
+    b="$(basename "$f")"
+    if [ -e "$f" ] && [ ! -e "$here/src/$b" ]; then rm -f "$f" "$t/src/$b"; fi
+  done
+  for f in "$here"/src/*.cpp "$here"/src/*.h "$here/src/README" "$here/src/Install.sh" \
+    "$here/src/Makefile.lammps"; do
+    sync_file "$f" "$pkg/$(basename "$f")"
+  done
+  mkdir -p "$t/src/MAKE/MINE"
+  for m in mpi serial; do
+    sed -e "s/^\(CCFLAGS =\s*\)-g -O3/\1${PERIDEM_LAMMPS_OPT:--O1}/" \
+      -e "s/^\(LINKFLAGS =\s*\)-g -O3/\1${PERIDEM_LAMMPS_OPT:--O1}/" "$t/src/MAKE/Makefile.$m" \
+      >"$t/src/MAKE/MINE/Makefile.$m.new"
+    sync_file "$t/src/MAKE/MINE/Makefile.$m.new" "$t/src/MAKE/MINE/Makefile.$m"
+    rm -f "$t/src/MAKE/MINE/Makefile.$m.new"
+  done
+  cd "$t/src"
+  # PERIDEM in the package list of src/Makefile, after PERI (as LAMMPS's "Adding a package"
+  # describes): `make package-status` knows it, and `lmp -h` lists it among the installed
+  # packages
+  if ! grep -q '^[[:space:]]peridem \\$' Makefile; then
+    sed -i '0,/^\tperi \\$/s//\tperi \\\n\tperidem \\/' Makefile
+  fi
+  make yes-molecule yes-peri yes-peridem
+  for f in "$pkg"/*.cpp; do rm -f "Obj_mpi/$(basename "${f%.cpp}").o" "Obj_serial/$(basename "${f%.cpp}").o"; done
+  if nice -n 10 make -j "$jobs" mpi >"$mtree/make.log" 2>&1; then
+    machine=mpi
+  else
+    echo "make mpi failed (tail of $mtree/make.log):" && tail -n 30 "$mtree/make.log"
+    nice -n 10 make -j "$jobs" serial >"$mtree/make.log" 2>&1 || { tail -n 30 "$mtree/make.log"; return 1; }
+    machine=serial
+  fi
+  echo "make $machine: lmp_$machine built"
+  "./lmp_$machine" -h | grep -A 2 '^Installed packages:' | grep -w PERIDEM >/dev/null ||
+    { echo "lmp_$machine -h lists no PERIDEM among its installed packages" >&2; return 1; }
+  # warnings in PERIDEM's files (the package's .cpp and .h, as make prints them: ../file:line:)
+  local names n
+  names="$(cd "$pkg" && ls -- *.cpp *.h | sed 's/\./\\./g' | paste -sd'|')"
+  grep -E "(^|/)($names):[0-9]+:[0-9]+: warning" "$mtree/make.log" >"$mtree/warnings.log" || true
+  cat "$mtree/warnings.log"
+  n=$(wc -l <"$mtree/warnings.log")
+  echo "warnings in PERIDEM's files: $n"
+  [ "$n" -eq 0 ] || return 1
+  # the per-file flags reached the compile lines (src/Makefile.lammps)
+  grep -E -- "-Wall .*-c \.\./lmp_peridem_parse\.cpp" "$mtree/make.log" >/dev/null ||
+    { echo "no -Wall on lmp_peridem_parse.cpp's compile line" >&2; return 1; }
+  for f in bond_peridem bond_peridem_base; do
+    grep -E -- "-fno-math-errno -ftree-vectorize -ffp-contract=off .*-c \.\./$f\.cpp" "$mtree/make.log" >/dev/null ||
+      { echo "$f.cpp compiled without its flags" >&2; return 1; }
+  done
+  grep -E -- "-ffp-contract=off .*-c \.\./bond_peridem_lps\.cpp" "$mtree/make.log" >/dev/null ||
+    { echo "bond_peridem_lps.cpp compiled without -ffp-contract=off" >&2; return 1; }
+  n=$(objdump -d "Obj_$machine/bond_peridem.o" | grep -c sqrtpd || true)
+  echo "bond_peridem.o (make): $n sqrtpd"
+  [ "$n" -gt 0 ] || { echo "no sqrtpd in Obj_$machine/bond_peridem.o" >&2; return 1; }
+  fresh_reference
+  local d="$root/runs/intree-make" np=2
+  [ "$machine" = mpi ] || np=1
+  rm -rf "$d" && mkdir -p "$d"
+  (cd "$d" && mpirun -np "$np" "$t/src/lmp_$machine" -in "$here/unittest/plugin/all_styles.in" \
+    -var potentials "$here/potentials" -log log.lammps -echo none -screen none) || return 1
+  python3 "$here/unittest/scripts/thermo_compare.py" "$d/log.lammps" "$root/runs/driver/log.lammps"
+}
 plugin-tests() { route_tests plugin; }
 
 source "$here/unittest/scripts/mpi_env.sh"
