@@ -330,8 +330,8 @@ void BondPeridem::stability_springs(std::vector<double> &k)
 }
 
 /* ----------------------------------------------------------------------
-   bond_coeff N material FILE NAME [horizon eps] [Gc value] [micromodulus m] [spacing h]
-              [break yes|no]
+   bond_coeff N material FILE NAME [horizon eps] [Gc value | s0 value] [micromodulus m]
+              [spacing h] [break yes|no]
    bond_coeff N E|K value Gc value horizon eps [micromodulus m] [spacing h] [break yes|no]
    bond_coeff N c value s0 value horizon eps [micromodulus m] [spacing h] [break yes|no]
 ------------------------------------------------------------------------- */
@@ -380,7 +380,9 @@ void BondPeridem::coeff(int narg, char **arg)
   std::string origin = a.origin;
   const int ilo = a.ilo, ihi = a.ihi;
 
-  const int nsources = int(haveMaterial) + int(haveE || haveK) + int(haveC || haveS0);
+  // with a material, s0 (like Gc) overrides the file's: a critical stretch from a strength
+  const int nsources =
+      int(haveMaterial) + int(haveE || haveK) + int(haveC || (haveS0 && !haveMaterial));
   if (nsources != 1)
     error->all(FLERR,
                "{}: {} needs exactly one of: material FILE NAME; E or K with Gc and horizon; "
@@ -400,6 +402,7 @@ void BondPeridem::coeff(int narg, char **arg)
       material.micromodulus = p.micromodulus;
       // Gc overrides the file's, as horizon does (Bhattacharya & Lipton 2023 §6.4 vary only
       // G_c of their M1); it used to be ignored without a word
+      if (haveGc && haveS0) error->all(FLERR, "{}: give Gc or s0, not both", COEFF);
       if (haveGc) {
         material.G_c = Gc;
         origin += fmt::format(", Gc = {}", Gc);
@@ -411,7 +414,8 @@ void BondPeridem::coeff(int narg, char **arg)
       const peridem::BondConstants bc =
           peridem::material_bond_constants(material, dimension, p.horizon);
       p.c = bc.c;
-      p.s0 = bc.s0;
+      p.s0 = haveS0 ? s0val : bc.s0;
+      if (haveS0) origin += fmt::format(", s0 = {}", s0val);
     } else if (haveE || haveK) {
       if (!haveGc)
         error->all(FLERR, "{}: {} with {} needs Gc (fracture energy)", COEFF, STYLE,

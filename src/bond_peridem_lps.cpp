@@ -465,9 +465,9 @@ void BondPeridemLPS::coeff(int narg, char **arg)
                "horizon and influence (use bond_style peridem for {})",
                COEFF, m.haveC ? "c" : (m.haveE ? "E" : "micromodulus"), STYLE,
                m.haveC ? "c" : (m.haveE ? "E" : "micromodulus"));
-  if (a.haveMaterial && (m.haveK || m.haveG || a.haveGc || a.haveS0))
-    error->all(FLERR, "{}: {} takes material FILE NAME or K, G and Gc (or s0), not both", COEFF,
-               STYLE);
+  if (a.haveMaterial && (m.haveK || m.haveG))
+    error->all(FLERR, "{}: {} takes material FILE NAME or K and G, not both", COEFF, STYLE);
+  if (a.haveGc && a.haveS0) error->all(FLERR, "{}: give Gc or s0, not both", COEFF);
 
   double K = m.K, G = m.G, s0val = 0.0, eps = a.eps;
   int infl = 0; // the paper's 1 - r/eps
@@ -482,15 +482,18 @@ void BondPeridemLPS::coeff(int narg, char **arg)
     if (!(eps > 0.0))
       error->all(FLERR, "{}: {} has no horizon: add horizon to the file or the command", COEFF,
                  a.origin);
-    if (!(mat.G_c > 0.0)) error->all(FLERR, "{}: {} has no Gc", COEFF, a.origin);
     infl = mat.micromodulus == peridem::Micromodulus::Conic ? 0 : 1;
-    a.Gc = mat.G_c;
-    a.haveGc = true;
+    // Gc or s0 in the command overrides the file's Gc (s0: a critical stretch from a strength)
+    if (!a.haveGc && !a.haveS0) {
+      if (!(mat.G_c > 0.0)) error->all(FLERR, "{}: {} has no Gc", COEFF, a.origin);
+      a.Gc = mat.G_c;
+      a.haveGc = true;
+    }
   } else {
     if (!m.haveK) error->all(FLERR, "{}: {} needs K (bulk modulus)", COEFF, STYLE);
     if (!m.haveG) error->all(FLERR, "{}: {} needs G (shear modulus)", COEFF, STYLE);
     if (!(eps > 0.0)) error->all(FLERR, "{}: {} needs a horizon", COEFF, STYLE);
-    if (a.haveGc == a.haveS0)
+    if (!a.haveGc && !a.haveS0)
       error->all(FLERR, "{}: {} needs Gc (fracture energy, PeriDEM eq. 10) or s0, one of them",
                  COEFF, STYLE);
   }

@@ -15,6 +15,7 @@
 
 #include "error.h"
 #include "lammps.h"
+#include "utils.h"
 
 #include <cerrno>
 #include <cmath>
@@ -49,13 +50,16 @@ int yes_no(LAMMPS *lmp, const std::string &command, const std::string &keyword,
 double number(LAMMPS *lmp, const std::string &command, const std::string &keyword,
               const char *value)
 {
+  // the numbers LAMMPS's own parsers accept (utils::numeric: utils::is_double), in a message
+  // that names the command and the keyword; inf, nan and overflows are named as such
   const std::string text = value ? value : "";
   char *end = nullptr;
   const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str() || *end != '\0')
-    lmp->error->all(FLERR, "{}: {} must be a number, not '{}'", command, keyword, text);
-  if (!std::isfinite(v))
+  const bool parsed = !text.empty() && end != text.c_str() && *end == '\0';
+  if (parsed && !std::isfinite(v))
     lmp->error->all(FLERR, "{}: {} must be a finite number, not {}", command, keyword, text);
+  if (!utils::is_double(text))
+    lmp->error->all(FLERR, "{}: {} must be a number, not '{}'", command, keyword, text);
   return v;
 }
 
@@ -66,7 +70,8 @@ long long integer(LAMMPS *lmp, const std::string &command, const std::string &ke
   char *end = nullptr;
   errno = 0;
   const long long v = text.empty() ? 0 : std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || end == text.c_str() || *end != '\0' || errno == ERANGE)
+  // LAMMPS's integers (utils::inumeric: utils::is_integer), within range
+  if (!utils::is_integer(text) || *end != '\0' || errno == ERANGE)
     lmp->error->all(FLERR, "{}: {} must be an integer, not '{}'", command, keyword, text);
   return v;
 }

@@ -16,6 +16,9 @@
 #include "lammps_fixture.h"
 
 #include "atom.h"
+#include "bond.h"
+#include "force.h"
+#include "peridem_bond_law.h"
 #include "bond_loop_check.h"
 #include "lammps.h"
 #include "library.h"
@@ -223,6 +226,36 @@ TEST_F(BondPeridemLPS, PatchTest2D)
       }
       EXPECT_LT(previous, 0.01); // measured 0.0047-0.0071
     }
+  }
+}
+
+// bond_coeff N material FILE NAME with Gc or s0: the command's value overrides the file's Gc
+// (s0: a critical stretch from a strength, examples/sheared-fault), in both bond styles
+TEST_F(BondPeridemLPS, MaterialCriticalStretchOverride)
+{
+  const std::string file =
+      std::string(PERIDEM_SOURCE_DIR) + "/potentials/granite_kiiskinen2017.peridem";
+  const double K = 50e9 / (3.0 * (1.0 - 2.0 * 0.22)), G = 50e9 / (2.0 * 1.22),
+               eps = 3.0e-3 * (1.0 + 1e-6);
+  struct Case {
+    const char *style, *extra;
+    double s0;
+  };
+  const Case cases[] = {
+      {"peridem/lps", "", peridem::lps_critical_stretch(K, G, 43.0, eps)},
+      {"peridem/lps", " Gc 500", peridem::lps_critical_stretch(K, G, 500.0, eps)},
+      {"peridem/lps", " s0 0.0056", 0.0056},
+      {"peridem", " s0 0.0056", 0.0056},
+  };
+  for (const Case &c : cases) {
+    TearDown();
+    SetUp();
+    command(block(2, 4, 3.0, c.style, std::string("material ") + file + " granite" + c.extra));
+    int dim = 0;
+    const double *s0 = static_cast<double *>(lmp->force->bond->extract("s0", dim));
+    ASSERT_NE(s0, nullptr);
+    std::printf("  %s%s: s0 = %.10g\n", c.style, c.extra, s0[1]);
+    EXPECT_NEAR(s0[1], c.s0, 1e-12 * c.s0);
   }
 }
 

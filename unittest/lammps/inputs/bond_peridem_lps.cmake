@@ -27,7 +27,7 @@ peridem_bond_error(lps_missing_horizon bond_cases.data lps_missing_horizon.lmp
 peridem_bond_error(lps_missing_Gc bond_cases.data lps_missing_Gc.lmp
   "bond_coeff: bond_style peridem/lps needs Gc \\(fracture energy, PeriDEM eq. 10\\) or s0")
 peridem_bond_error(lps_Gc_and_s0 bond_cases.data lps_Gc_and_s0.lmp
-  "bond_coeff: bond_style peridem/lps needs Gc \\(fracture energy, PeriDEM eq. 10\\) or s0, one of them")
+  "bond_coeff: give Gc or s0, not both")
 peridem_bond_error(lps_bond_based_c bond_cases.data lps_bond_based_c.lmp
   "bond_coeff: c is a bond-based coefficient; bond_style peridem/lps is state-based")
 peridem_bond_error(lps_micromodulus bond_cases.data lps_micromodulus.lmp
@@ -43,7 +43,7 @@ peridem_bond_error(lps_bad_break bond_cases.data lps_bad_break.lmp
 peridem_bond_error(bond_bad_break_coeff bond_cases.data bond_bad_break_coeff.lmp
   "bond_coeff: break must be yes or no, not sometimes")
 peridem_bond_error(lps_material_and_K bond_cases.data lps_material_and_K.lmp
-  "bond_coeff: bond_style peridem/lps takes material FILE NAME or K, G and Gc \\(or s0\\), not both")
+  "bond_coeff: bond_style peridem/lps takes material FILE NAME or K and G, not both")
 peridem_bond_error(lps_material_no_G bond_cases.data lps_material_no_G.lmp
   "bond_coeff: bond_style peridem/lps needs K and G \\(or any two of E, nu, K, G\\); material X of .*lps_E_only.peridem has not both")
 peridem_bond_error(lps_dilation_needs_lps bond_cases.data lps_dilation_needs_lps.lmp

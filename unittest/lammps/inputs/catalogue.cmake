@@ -19,6 +19,9 @@ peridem_catalogue_error(inf_bond_Gc "bond_coeff: Gc \\(fracture energy\\) must b
   -var bad "bond_coeff 1 E 1e9 Gc inf horizon 2e-3")
 peridem_catalogue_error(word_bond_horizon "bond_coeff: horizon must be a number, not 'two'"
   -var bad "bond_coeff 1 E 1e9 Gc 1000 horizon two")
+# numbers are what LAMMPS's utils::is_double accepts: strtod's hexadecimal floats are refused
+peridem_catalogue_error(hex_bond_E "bond_coeff: E \\(Young's modulus\\) must be a number, not '0x1p30'"
+  -var bad "bond_coeff 1 E 0x1p30 Gc 1000 horizon 2e-3")
 peridem_catalogue_error(nan_pair_Kn "pair_coeff: Kn must be a finite number, not nan"
   -var pre "pair_style peridem/contact" -var bad "pair_coeff * * Kn nan Rc 1e-3")
 peridem_catalogue_error(inf_pair_Rc "pair_coeff: Rc \\(contact radius\\) must be a finite number, not -inf"
@@ -43,6 +46,8 @@ peridem_catalogue_error(bond_coeff_material_args "bond_coeff: material needs a f
   -var bad "bond_coeff 1 material")
 peridem_catalogue_error(bond_coeff_E_and_K "bond_coeff: give E or K, not both"
   -var bad "bond_coeff 1 E 1e9 K 1e9 Gc 1 horizon 2e-3")
+peridem_catalogue_error(bond_coeff_Gc_and_s0 "bond_coeff: give Gc or s0, not both"
+  -var bad "bond_coeff 1 material ${PROJECT_SOURCE_DIR}/potentials/peridem_M1.peridem M1 horizon 2e-3 Gc 1 s0 0.01")
 peridem_catalogue_error(bond_coeff_c_without_s0 "bond_coeff: give both c and s0"
   -var bad "bond_coeff 1 c 1e20 horizon 2e-3")
 peridem_catalogue_error(bond_coeff_Gc_with_s0 "bond_coeff: Gc does not go with c and s0 \\(s0 is given\\)"
