@@ -40,15 +40,18 @@ files=("$here"/src/*.cpp)
 logdir="$(mktemp -d)"
 trap 'rm -rf "$logdir"' EXIT
 export cxx logdir
+# the file is an argument of the inner shell, never part of its script (a path with a space
+# or a quote stays one word)
 printf '%s\n' "${files[@]}" | xargs -P "${PERIDEM_JOBS:-$(nproc)}" -I{} sh -c \
-  '"$cxx" "$@" {} >"$logdir/$(basename {}).log" 2>&1 || touch "$logdir/$(basename {}).failed"' \
-  sh "${flags[@]}"
+  'f="$1"; shift; b="${f##*/}"; "$cxx" "$@" "$f" >"$logdir/$b.log" 2>&1 || : >"$logdir/$b.failed"' \
+  sh {} "${flags[@]}"
 failed=0
 for f in "${files[@]}"; do
   b="$(basename "$f")"
-  if [ -e "$logdir/$b.failed" ]; then
+  # a file without a log was never compiled: a failure too
+  if [ -e "$logdir/$b.failed" ] || [ ! -e "$logdir/$b.log" ]; then
     echo "FAIL $b"
-    cat "$logdir/$b.log"
+    cat "$logdir/$b.log" 2>/dev/null || true
     failed=$((failed + 1))
   fi
 done

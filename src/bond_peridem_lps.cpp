@@ -425,7 +425,8 @@ std::string BondPeridemLPS::plane_description() const
 /* ----------------------------------------------------------------------
    bond_coeff N K value G value (Gc value | s0 value) horizon eps
               [influence conic|constant|inverse] [spacing h] [break yes|no]
-   bond_coeff N material FILE NAME [horizon eps] [influence w] [spacing h] [break yes|no]
+   bond_coeff N material FILE NAME [horizon eps] [Gc value | s0 value] [influence w]
+              [spacing h] [break yes|no]
 ------------------------------------------------------------------------- */
 
 bool BondPeridemLPS::coeff_keyword(const std::string &key, const char *value, const char *style)

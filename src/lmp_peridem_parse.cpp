@@ -50,15 +50,16 @@ int yes_no(LAMMPS *lmp, const std::string &command, const std::string &keyword,
 double number(LAMMPS *lmp, const std::string &command, const std::string &keyword,
               const char *value)
 {
-  // the numbers LAMMPS's own parsers accept (utils::numeric: utils::is_double), in a message
-  // that names the command and the keyword; inf, nan and overflows are named as such
+  // read whole, and a number by LAMMPS's own test (utils::numeric: utils::is_double; before
+  // 2023 that test looks at the characters only), in a message that names the command and
+  // the keyword; inf, nan and overflows are named as such
   const std::string text = value ? value : "";
   char *end = nullptr;
   const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
   const bool parsed = !text.empty() && end != text.c_str() && *end == '\0';
   if (parsed && !std::isfinite(v))
     lmp->error->all(FLERR, "{}: {} must be a finite number, not {}", command, keyword, text);
-  if (!utils::is_double(text))
+  if (!parsed || !utils::is_double(text))
     lmp->error->all(FLERR, "{}: {} must be a number, not '{}'", command, keyword, text);
   return v;
 }

@@ -14,12 +14,13 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 dir="${1:-$here/runs}"
-lmp="${LMP:-$here/../../build/lmp_peridem}"
+lmp="$(realpath "${LMP:-$here/../../build/lmp_peridem}")" # the runs start in DIR
 ratios="${RATIOS:-0.0125 0.05 0.1 0.25 0.5 1.0}"
 mus="${MUS:-0.7 0}"
 jobs="${JOBS:-2}"
 mkdir -p "$dir"
-cp "$here/in.fault" "$dir/in.fault" # LAMMPS reads its input as it goes: edits here cannot reach a run
+# LAMMPS reads its input as it goes: a copy, so that edits here cannot reach a run
+[ "$here/in.fault" -ef "$dir/in.fault" ] || cp "$here/in.fault" "$dir/in.fault"
 one() { # ratio mu
   local tag="p${1}_mu${2}" t0
   t0=$(date +%s)

@@ -20,6 +20,10 @@ peridem_catalogue_error(inf_bond_Gc "bond_coeff: Gc \\(fracture energy\\) must b
 peridem_catalogue_error(word_bond_horizon "bond_coeff: horizon must be a number, not 'two'"
   -var bad "bond_coeff 1 E 1e9 Gc 1000 horizon two")
 # numbers are what LAMMPS's utils::is_double accepts: strtod's hexadecimal floats are refused
+peridem_catalogue_error(two_points_bond_E "bond_coeff: E \\(Young's modulus\\) must be a number, not '1.2.3'"
+  -var bad "bond_coeff 1 E 1.2.3 Gc 1000 horizon 2e-3")
+peridem_catalogue_error(point_wall_pos "fix peridem/wall: wall xlo must be a number, not '.'"
+  -var bad "fix w all peridem/wall xlo . Kn 1e23 Rc 0.9e-3")
 peridem_catalogue_error(hex_bond_E "bond_coeff: E \\(Young's modulus\\) must be a number, not '0x1p30'"
   -var bad "bond_coeff 1 E 0x1p30 Gc 1000 horizon 2e-3")
 peridem_catalogue_error(nan_pair_Kn "pair_coeff: Kn must be a finite number, not nan"
