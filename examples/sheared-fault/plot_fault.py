@@ -124,10 +124,11 @@ def main():
         sys.exit(f"no p*_mu*.txt in {a.dir}")
     ratios = sorted({k[0] for k in runs})
     mus = sorted({k[1] for k in runs}, reverse=True)
-    rows = []
+    rows, fits = [], {}
     for (r, mu), (d, stem) in sorted(runs.items()):
         t, m = d[1:, 1], d[1:, 2]
-        (tc, muc, d1, d2), rms = fit_eq100(t, m)
+        fits[(r, mu)], rms = fit_eq100(t, m)
+        tc, muc, d1, d2 = fits[(r, mu)]
         dump = stem + ".final.dump"
         cls = classify(read_dump(dump), d, a.h, a.H, a.layer, a.debris) if os.path.exists(dump) else "?"
         rows.append(dict(ratio=r, mu=mu, t_end=t[-1], mu_mean=float(np.mean(m)),
@@ -164,8 +165,7 @@ def main():
         t = d[1:, 1] * 1e3
         if mu > 0:
             ax[0, 0].plot(t, d[1:, 2], ls, color=c, lw=0.8, label=f"p/σc = {r:g}")
-            p, _ = fit_eq100(d[1:, 1], d[1:, 2])
-            ax[0, 0].plot(t, eq100(d[1:, 1], *p), ":", color=c, lw=1.5)
+            ax[0, 0].plot(t, eq100(d[1:, 1], *fits[(r, mu)]), ":", color=c, lw=1.5)
         ax[1, 0].plot(t, d[1:, 10] * 1e3, ls, color=c)
         ax[1, 1].plot(t, d[1:, 12] / (r * SIGMA_C), ls, color=c)
     ax[0, 0].set(xlabel="t (ms)", ylabel="μ = F_x / (p L)  (eq. 85)", ylim=(-0.5, 4),
