@@ -16,12 +16,14 @@
 #      its CMake package mechanism (PKG_PERIDEM, cmake/Modules/Packages/PERIDEM.cmake);
 #   then the LAMMPS-level tests of 1. again through the in-tree lmp and the plugin;
 #   4. in tree with the traditional make build (`intree-make`): src/ copied to src/PERIDEM of a
-#      second, make-only copy of the LAMMPS tree, `make yes-peridem` and `make mpi`.
+#      second, make-only copy of the LAMMPS tree, `make yes-peridem` and `make mpi`;
+#   5. `bpm`: one lmp_bpm with LAMMPS's BPM package and PERIDEM, for bench/fracture's
+#      side-by-side measurement with BPM (run_bpm_impact.sh).
 # Everything is cached under $PERIDEM_LAMMPS2025_DIR (default /opt/peridem/lammps-2025):
 # a second call only rebuilds what changed. Usage:
 #   scripts/build_lammps_2025.sh [stage ...]     stages: fetch lammps outoftree reference plugin intree
-#                                                 intree-tests plugin-tests intree-make
-# (default: all but intree-make, in that order). Logs: $PERIDEM_LAMMPS2025_DIR/logs/. Exit code 0 when
+#                                                 intree-tests plugin-tests intree-make bpm
+# (default: all but intree-make and bpm, in that order). Logs: $PERIDEM_LAMMPS2025_DIR/logs/. Exit code 0 when
 # every stage passed.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -173,7 +175,7 @@ keep_lammps_objects() {
   fi
 }
 
-intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo output
+sync_package() { # src/ as src/PERIDEM of the LAMMPS tree, registered with its CMake
   local f pkg="$src/src/PERIDEM"
   mkdir -p "$pkg"
   for f in "$pkg"/*; do # files no longer in src/
@@ -188,6 +190,10 @@ intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo out
     sed -i 's/^  PERI$/  PERI\n  PERIDEM/' "$src/cmake/CMakeLists.txt"
     sed -i 's/^\(foreach(PKG_WITH_INCL KSPACE PYTHON\)/\1 PERIDEM/' "$src/cmake/CMakeLists.txt"
   fi
+}
+
+intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo output
+  sync_package
   # the first run after a build that predates save_flags: that build's flags.make
   if [ ! -f "$flags_last" ] && [ "$build/liblammps.so" -nt "$build/CMakeFiles/lammps.dir/flags.make" ]; then
     save_flags
@@ -343,6 +349,22 @@ intree-make() {
   python3 "$here/unittest/scripts/thermo_compare.py" "$d/log.lammps" "$ref"
 }
 plugin-tests() { route_tests plugin; }
+
+# one lmp with LAMMPS's BPM package and PERIDEM in tree, for bench/fracture/run_bpm_impact.sh:
+# both codes then run on the same LAMMPS, neighbour code and compiler flags (-O2, LAMMPS's own
+# default build type; PERIDEM's files get the package's flags). Its own build folder; static.
+bpm() {
+  sync_package
+  cmake -S "$src/cmake" -B "$root/build-bpm" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DBUILD_SHARED_LIBS=OFF -DBUILD_MPI=ON \
+    -DBUILD_OMP=OFF -DWITH_JPEG=OFF -DWITH_PNG=OFF -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON \
+    -DPKG_PERI=ON -DPKG_BPM=ON -DPKG_PERIDEM=ON -DLAMMPS_MACHINE=bpm
+  nice -n 10 cmake --build "$root/build-bpm" -j "$jobs"
+  local help
+  help="$("$root/build-bpm/lmp_bpm" -h)"
+  grep -qw "bpm/spring" <<< "$help" && grep -qw "peridem" <<< "$help"
+  echo "built $root/build-bpm/lmp_bpm"
+}
 
 source "$here/unittest/scripts/mpi_env.sh"
 t_all=$(date +%s)
