@@ -66,17 +66,17 @@ endforeach()
 
 add_library(peridem SHARED ${PERIDEM_STYLE_SOURCES} ${PROJECT_SOURCE_DIR}/driver/post_create_hook.cpp
   ${PROJECT_SOURCE_DIR}/driver/register_driver.cpp ${PROJECT_SOURCE_DIR}/driver/register_peridem.cpp)
-# the chunked bond loop of bond_peridem.cpp vectorises its square roots only
-# without errno (they take sums of squares, never negative); no FMA contraction,
-# so that its AVX-512 clone (which has FMA) gives the one-by-one loop's bits; the same for
-# bond_peridem_base.cpp (the break path and reference lengths the loops share) and
-# bond_peridem_lps.cpp, whose fast force pass must give its one-by-one pass's bits on any
-# target (-march=native has FMA)
+# bond_style peridem/opt (bond_peridem_opt.cpp): its chunked bond loop vectorises its square
+# roots only without errno (they take sums of squares, never negative). No FMA contraction in
+# any bond file: it is what keeps each fast force pass equal to its one-by-one pass, and
+# peridem/opt equal to peridem, to the bit on targets with FMA (the AVX-512 copy of
+# peridem/opt's loop, -march=native); bond_peridem_base.cpp holds the break path and the
+# reference lengths every loop shares. The plain style's file gets no other flag: portable.
+set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem_opt.cpp PROPERTIES
+  COMPILE_OPTIONS "-fno-math-errno;-ftree-vectorize;-ffp-contract=off")
 set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem.cpp
-  ${PROJECT_SOURCE_DIR}/src/bond_peridem_base.cpp PROPERTIES
-  COMPILE_OPTIONS "-fno-math-errno;-ffp-contract=off")
-set_source_files_properties(${PROJECT_SOURCE_DIR}/src/bond_peridem_lps.cpp PROPERTIES
-  COMPILE_OPTIONS "-ffp-contract=off")
+  ${PROJECT_SOURCE_DIR}/src/bond_peridem_base.cpp ${PROJECT_SOURCE_DIR}/src/bond_peridem_lps.cpp
+  PROPERTIES COMPILE_OPTIONS "-ffp-contract=off")
 target_include_directories(peridem PUBLIC ${PROJECT_SOURCE_DIR}/src ${PROJECT_SOURCE_DIR}/driver)
 # after LAMMPS's own include directory, so installed headers win where both exist
 target_include_directories(peridem SYSTEM AFTER PUBLIC ${PERIDEM_LAMMPS_SRC})

@@ -20,6 +20,7 @@
 #include "atom_vec_peridem.h"
 #include "bond_peridem.h"
 #include "bond_peridem_lps.h"
+#include "bond_peridem_opt.h"
 #include "compute_peridem_bed.h"
 #include "compute_peridem_contacts.h"
 #include "compute_peridem_damage.h"
@@ -83,6 +84,7 @@ void for_each_style(StyleSink &sink)
   sink.atom("peridem", &atom_vec_creator<AtomVecPeridem>);
   sink.bond("peridem", &bond_creator<BondPeridem>);
   sink.bond("peridem/lps", &bond_creator<BondPeridemLPS>);
+  sink.bond("peridem/opt", &bond_creator<BondPeridemOpt>);
   sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
   sink.fix("peridem/escapes", &fix_creator<FixPeridemEscapes>);

@@ -206,10 +206,10 @@ intree() { # src/ as the PERIDEM package of the LAMMPS tree: the same thermo out
   cmake --install "$build" --prefix "$intree"
   # the folder stays configured with PERIDEM (switching back would recompile LAMMPS's
   # style-list files twice per run); the plain LAMMPS is its install, $plain
-  # bond_style peridem's chunked loop vectorised (-fno-math-errno, PERIDEM.cmake): packed sqrt
-  local obj="$build/CMakeFiles/lammps.dir$src/src/PERIDEM/bond_peridem.cpp.o" n
+  # bond_style peridem/opt's chunked loop vectorised (-fno-math-errno, PERIDEM.cmake): packed sqrt
+  local obj="$build/CMakeFiles/lammps.dir$src/src/PERIDEM/bond_peridem_opt.cpp.o" n
   n=$(objdump -d "$obj" | grep -c sqrtpd || true)
-  echo "bond_peridem.cpp.o in tree: $n sqrtpd"
+  echo "bond_peridem_opt.cpp.o in tree: $n sqrtpd"
   [ "$n" -gt 0 ] || { echo "no sqrtpd in $obj: -fno-math-errno missing?" >&2; return 1; }
   fresh_reference
   local d="$root/runs/intree"
@@ -320,15 +320,17 @@ intree-make() {
   # the per-file flags reached the compile lines (src/Makefile.lammps)
   grep -E -- "-Wall .*-c \.\./lmp_peridem_parse\.cpp" "$mtree/make.log" >/dev/null ||
     { echo "no -Wall on lmp_peridem_parse.cpp's compile line" >&2; return 1; }
-  for f in bond_peridem bond_peridem_base; do
-    grep -E -- "-fno-math-errno -ftree-vectorize -ffp-contract=off .*-c \.\./$f\.cpp" "$mtree/make.log" >/dev/null ||
-      { echo "$f.cpp compiled without its flags" >&2; return 1; }
+  grep -E -- "-fno-math-errno -ftree-vectorize -ffp-contract=off .*-c \.\./bond_peridem_opt\.cpp" "$mtree/make.log" >/dev/null ||
+    { echo "bond_peridem_opt.cpp compiled without its flags" >&2; return 1; }
+  for f in bond_peridem bond_peridem_base bond_peridem_lps; do
+    grep -E -- "-ffp-contract=off .*-c \.\./$f\.cpp" "$mtree/make.log" >/dev/null ||
+      { echo "$f.cpp compiled without -ffp-contract=off" >&2; return 1; }
+    ! grep -E -- "-fno-math-errno .*-c \.\./$f\.cpp" "$mtree/make.log" >/dev/null ||
+      { echo "$f.cpp compiled with -fno-math-errno (peridem/opt's flag only)" >&2; return 1; }
   done
-  grep -E -- "-ffp-contract=off .*-c \.\./bond_peridem_lps\.cpp" "$mtree/make.log" >/dev/null ||
-    { echo "bond_peridem_lps.cpp compiled without -ffp-contract=off" >&2; return 1; }
-  n=$(objdump -d "Obj_$machine/bond_peridem.o" | grep -c sqrtpd || true)
-  echo "bond_peridem.o (make): $n sqrtpd"
-  [ "$n" -gt 0 ] || { echo "no sqrtpd in Obj_$machine/bond_peridem.o" >&2; return 1; }
+  n=$(objdump -d "Obj_$machine/bond_peridem_opt.o" | grep -c sqrtpd || true)
+  echo "bond_peridem_opt.o (make): $n sqrtpd"
+  [ "$n" -gt 0 ] || { echo "no sqrtpd in Obj_$machine/bond_peridem_opt.o" >&2; return 1; }
   local d="$root/runs/intree-make" ref="$root/runs/driver/log.lammps"
   rm -rf "$d" && mkdir -p "$d"
   if [ "$machine" = mpi ]; then

@@ -71,8 +71,15 @@ class BondPeridem : public BondPeridemBase {
   BondCache cache;
   void fill_cache() override;
   template <bool ONE_TYPE> void compute_one_by_one(int eflag);
-  void compute_chunked();
-  template <int DIM, bool UNIFORM_K, bool ONE_TYPE> void chunked_pass();
+  // the force loop of ordinary steps (no energy, no virial): the chunked passes, defined in
+  // bond_peridem_chunked.h; bond_style peridem/opt compiles the same passes with flags of its
+  // own and overrides this
+  virtual void compute_chunked();
+  // VARIANT is a tag type in an unnamed namespace of the file that instantiates the passes:
+  // each file's copy then has internal linkage and keeps that file's compiler flags (two
+  // copies of one name with external linkage are one to the linker, which keeps either)
+  template <class VARIANT> void chunked_passes();
+  template <class VARIANT, int DIM, bool UNIFORM_K, bool ONE_TYPE> void chunked_pass();
   double bond_stiffness(int type, double r0, int i1, int i2) const;
   double stiffness(int type, double r0, double vol1, double vol2) const;
 };

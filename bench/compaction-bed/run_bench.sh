@@ -28,7 +28,8 @@
 #   PERIDEM_BENCH_BASE_VARS="-var sort_bin 0.115e-3" (more -var settings of in.timed for the
 #   base runs only; without PERIDEM_BENCH_BASE the base is this build: e.g. LAMMPS's spatial
 #   sort against PERIDEM's grain order, the same build),
-#   PERIDEM_BENCH_VARS="-var balance no -var g 0" (more -var settings of in.timed)
+#   PERIDEM_BENCH_VARS="-var balance no -var g 0" (more -var settings of in.timed),
+#   PERIDEM_BENCH_OPT=1 (this build with -sf opt too: bond_style peridem/opt, row "opt")
 # Cost against the number of grains (also printed as ns per node-step and the ratio of the
 # largest bed's to the smallest's):
 #   PERIDEM_BENCH_RANKS=1 PERIDEM_BENCH_BONDS=peridem PERIDEM_BENCH_WARMUP=300 \
@@ -84,6 +85,7 @@ run_stock() {
 # and build in turn, so that the machine's changes of speed (up to 50 % within minutes here)
 # hit all alike
 runs=("this|$build|")
+[ "${PERIDEM_BENCH_OPT:-0}" = 1 ] && runs+=("opt|$build|-sf opt")
 base_vars=${PERIDEM_BENCH_BASE_VARS:-}
 if [ -n "$base" ] || [ -n "$base_vars" ]; then
   runs+=("base|$(realpath "${base:-$build}")|$base_vars")
@@ -94,7 +96,7 @@ for n in "${grains[@]}"; do
       -var bond "$b" -var warmup "$warmup" -var restart "bed_${n}_$b.restart" -log "log.warm_${n}_$b" -screen none
   done
 done
-declare -A best=() loops=()
+declare -A best=() loops=() cpus=()
 ncores=$(nproc)
 for rep in $(seq "$repeats"); do
   run_stock
@@ -116,6 +118,7 @@ for rep in $(seq "$repeats"); do
           line=$(parse log.t)
           key="$n|$b|$np|$name"
           loops["$key|$rep"]=${line%% *}
+          cpus["$key|$rep"]=$(awk '{print $1 * $2}' <<<"$line")
           if [ -z "${best[$key]:-}" ] || python3 -c "import sys; sys.exit(0 if ${line%% *} < ${best[$key]%% *} else 1)"; then
             best[$key]="$line"
           fi
@@ -151,6 +154,27 @@ print(f"| {name} | {n} | {b} | {np_} | {int(nat):,} | {int(nbond):,} | {per*1e3:
       f"{share(mod):.1f} | {share(neigh):.1f} | {share(pair):.1f} | {share(comm):.1f} | {kib:.1f} | {bpb:.0f} | {scaled:.3g} |")
 PY
       done
+    done
+  done
+done
+# the median time per step over the repeats (wall, and CPU of rank 0), per bed, bond style,
+# rank count and build
+echo
+median_ms() { python3 -c "import statistics, sys; print(f'{statistics.median(map(float, sys.argv[2:])) / int(sys.argv[1]) * 1e3:.3f}')" "$@"; }
+for n in "${grains[@]}"; do
+  for b in $bonds_list; do
+    for np in $ranks_list; do
+      line="median ms/step (wall, CPU) over $repeats repeats, $n grains, $b, $np rank(s):"
+      for r in "${runs[@]}"; do
+        name=${r%%|*}
+        w=() c=()
+        for rep in $(seq "$repeats"); do
+          w+=("${loops["$n|$b|$np|$name|$rep"]}")
+          c+=("${cpus["$n|$b|$np|$name|$rep"]}")
+        done
+        line+=" $name $(median_ms "$steps" "${w[@]}"), $(median_ms "$steps" "${c[@]}");"
+      done
+      echo "${line%;}"
     done
   done
 done

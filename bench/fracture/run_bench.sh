@@ -26,6 +26,9 @@ here="$(cd "$(dirname "$0")/../.." && pwd)"
 build="$(realpath "${1:-$here/build}")"
 repeats="${2:-3}"
 steps="${3:-2000}"
+# the bond styles' vectorised variant (bond_style peridem/opt), as the figures in README.md;
+# PERIDEM_BENCH_SUFFIX="" times the portable plain style
+suffix="${PERIDEM_BENCH_SUFFIX--sf opt}"
 source "$here/unittest/scripts/mpi_env.sh"
 source "$here/bench/current_build.sh"
 source "$here/bench/fracture/timing.sh"
@@ -53,7 +56,7 @@ run_one() { # folder input dt vars
   printf 'variable b0 equal 0\ninclude %s\nprint "BENCH-BONDS $(bonds)"\n' "$2" >"$dir/in.bench"
   local length="-var steps $steps"
   [ "$3" = steps ] || length="-var time $(awk -v s="$steps" -v dt="$3" 'BEGIN {printf "%.10g", s * dt}')"
-  (cd "$dir" && mpirun -np 1 "$build/lmp_peridem" -in in.bench $4 -var potentials "$here/potentials" \
+  (cd "$dir" && mpirun -np 1 "$build/lmp_peridem" $suffix -in in.bench $4 -var potentials "$here/potentials" \
      $length -log log.bench -screen none >/dev/null 2>&1)
   log_timing "$dir/log.bench"
 }

