@@ -18,9 +18,11 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "modify.h"
 #include "output.h"
+#include "pair.h"
 #include "update.h"
 
 #include <cmath>
@@ -59,7 +61,24 @@ FixPeridemVelocityHistory::~FixPeridemVelocityHistory()
 
 int FixPeridemVelocityHistory::setmask()
 {
-  return PRE_FORCE;
+  return PRE_FORCE | END_OF_STEP;
+}
+
+// the pair style cannot change within a run: its hooks are found once per run
+void FixPeridemVelocityHistory::init()
+{
+  step_end = run_end = nullptr;
+  Pair *pair = force->pair ? force->pair_match("^peridem/contact", 0) : nullptr;
+  if (!pair) return;
+  int dim = 0;
+  step_end = static_cast<const std::function<void()> *>(pair->extract("peridem_step_end", dim));
+  run_end = static_cast<const std::function<void()> *>(pair->extract("peridem_run_end", dim));
+}
+
+// LAMMPS calls end_of_step after every fix's final_integrate: v = v(n)
+void FixPeridemVelocityHistory::end_of_step()
+{
+  if (step_end && *step_end) (*step_end)();
 }
 
 /* ----------------------------------------------------------------------
@@ -121,6 +140,7 @@ void FixPeridemVelocityHistory::post_run()
   double **v = atom->v;
   for (int i = 0; i < atom->nlocal; i++)
     for (int k = 0; k < 3; k++) vend[i][k] = v[i][k];
+  if (run_end && *run_end) (*run_end)();
 }
 
 /* ---------------------------------------------------------------------- */

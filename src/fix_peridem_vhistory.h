@@ -21,6 +21,14 @@
    A node whose velocity changed since that step (velocity, set, a data
    file) is taken at its velocity, as before.
 
+   At the end of each step of a run it also calls pair_style
+   peridem/contact back (extract "peridem_step_end"), which counts the
+   work of its dissipative forces with the full-step velocities v(n) then.
+   A pair style has no end-of-step stage of its own; this fix exists
+   exactly when the pair's forces depend on v, so a second internal fix
+   made under the same condition would only add an ID and its checks.
+   fix peridem/wall, a fix, counts its own work in its own end_of_step.
+
    Created by pair_style peridem/contact and fix peridem/wall when they
    dissipate (ID PERIDEM_VHISTORY); not meant to be defined in an input.
 ------------------------------------------------------------------------- */
@@ -36,6 +44,8 @@ FixStyle(peridem/vhistory,FixPeridemVelocityHistory);
 
 #include "fix.h"
 
+#include <functional>
+
 namespace LAMMPS_NS {
 
 class FixPeridemVelocityHistory : public Fix {
@@ -48,8 +58,10 @@ class FixPeridemVelocityHistory : public Fix {
   FixPeridemVelocityHistory(class LAMMPS *, int, char **);
   ~FixPeridemVelocityHistory() override;
   int setmask() override;
+  void init() override;
   void setup_pre_force(int) override;
   void pre_force(int) override;
+  void end_of_step() override;
   void post_run() override;
 
   // In the setup of a run: per owned and ghost atom, flat, the velocity its dissipative
@@ -77,6 +89,9 @@ class FixPeridemVelocityHistory : public Fix {
   double *known;         // the step whose v(n - 1/2) vhalf holds (0: none)
   bool in_run = false;   // between a run's setup and its end (restarts written in a run)
   bool prepared = false; // setup_velocities() valid in this setup
+  // what pair_style peridem/contact does at the end of each step and of each run (found at
+  // each init; nullptr: nothing)
+  const std::function<void()> *step_end = nullptr, *run_end = nullptr;
 };
 
 } // namespace LAMMPS_NS

@@ -217,7 +217,7 @@ FixPeridemWall::~FixPeridemWall()
 
 int FixPeridemWall::setmask()
 {
-  return POST_INTEGRATE | POST_FORCE | POST_FORCE_RESPA | POST_RUN | MIN_POST_FORCE |
+  return POST_INTEGRATE | POST_FORCE | POST_FORCE_RESPA | END_OF_STEP | POST_RUN | MIN_POST_FORCE |
          (lost_delete ? PRE_EXCHANGE : 0);
 }
 
@@ -539,7 +539,14 @@ void FixPeridemWall::post_force(int vflag)
   const double *rmass = atom->rmass;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  double power = 0.0;
+  // the damping and friction forces of a run's steps and of its setup, for their work with the
+  // full-step velocities (end_of_step); not in a minimisation
+  const bool count_work = update->whichflag == 1;
+  if (count_work) {
+    work_node.clear();
+    work_force.clear();
+    work_wall = 0.0;
+  }
 
   // in a run, only the nodes within reach of a wall (looping over every node
   // cost 17 % of a 40-grain bed's step); in setup and minimisation, with
@@ -595,7 +602,8 @@ void FixPeridemWall::post_force(int vflag)
     const peridem::WallContactResult res = peridem::wall_contact_force(box, in, params);
     for (int k = 0; k < 3; k++) f[i][k] += res.f[k];
     local[ENERGY] += res.energy;
-    power += res.power;
+    if (count_work && (res.f_dis[0] != 0.0 || res.f_dis[1] != 0.0 || res.f_dis[2] != 0.0))
+      keep_work(i, res.f_dis, res.wall_power);
     for (int w = 0; w < nwalls; w++)
       for (int k = 0; k < 3; k++) local[3 * w + k] += res.f_wall[w][k];
 
@@ -607,11 +615,53 @@ void FixPeridemWall::post_force(int vflag)
       v_tally(i, vir);
     }
   }
-  if (damp_centres) power += apply_centroid_damping(vel);
-  if (!in_setup) dissipated_local -= power * update->dt;
+  if (damp_centres) apply_centroid_damping(vel, count_work);
+  // a setup has v(n) already: the power of the step it continues, or of the state it starts from
+  if (count_work && in_setup) power_prev = dissipative_power();
+  if (count_work && !in_setup) work_step = update->ntimestep;
   local[DISSIPATED] = dissipated_local;
   reduced = 0;
   if (servo_any) servo_control();
+}
+
+/* ----------------------------------------------------------------------
+   the work of the damping and friction forces with the full-step
+   velocities v(n) of velocity Verlet, by the trapezoidal rule of
+     P(n) = sum_i (F_i(n) . v_i(n) - sum_w F_iw(n) . v_w),
+   F_iw the force of wall w on node i and v_w the wall's velocity
+   (peridem::dissipated_in_step at the end of each step, P of the setup
+   opening a run). pair_style peridem/contact explains the choice
+   (count_work there): stuck contacts are counted with the kinetic energy
+   they take, not with each flip of their force. Atoms do not change ranks
+   or places between post_force and end_of_step.
+------------------------------------------------------------------------- */
+
+void FixPeridemWall::keep_work(int i, const double *f, double wall_rate)
+{
+  work_node.push_back(i);
+  work_force.insert(work_force.end(), f, f + 3);
+  work_wall += wall_rate;
+}
+
+double FixPeridemWall::dissipative_power() const
+{
+  double **v = atom->v;
+  double power = -work_wall;
+  for (std::size_t n = 0; n < work_node.size(); n++) {
+    const double *fi = &work_force[3 * n];
+    const double *vi = v[work_node[n]];
+    power += fi[0] * vi[0] + fi[1] * vi[1] + fi[2] * vi[2];
+  }
+  return power;
+}
+
+void FixPeridemWall::end_of_step()
+{
+  if (work_step != update->ntimestep) return;
+  work_step = -1;
+  dissipated_local += peridem::dissipated_in_step(power_prev, dissipative_power(), update->dt);
+  local[DISSIPATED] = dissipated_local;
+  reduced = 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -642,10 +692,10 @@ void FixPeridemWall::add_wall_virial(int w, const double *xi, const double *fw, 
    contact pair with damping centroid: the dashpot between the centre of
    each grain and each wall it touches (the touches were collected in
    post_force), its forces on the nodes, the wall reactions and the
-   virial; returns the power on rank 0 (lmp_peridem_wall_damping.h)
+   virial, and the forces kept for their work (lmp_peridem_wall_damping.h)
 ------------------------------------------------------------------------- */
 
-double FixPeridemWall::apply_centroid_damping(const double *vel)
+void FixPeridemWall::apply_centroid_damping(const double *vel, bool count_work)
 {
   double outward_normal[peridem::kMaxWalls][3] = {}, velocity[peridem::kMaxWalls][3] = {};
   for (int w = 0; w < nwalls; w++) {
@@ -656,18 +706,19 @@ double FixPeridemWall::apply_centroid_damping(const double *vel)
   double **x = atom->x;
   double **f = atom->f;
   const bool tally = vflag_global || vflag_atom;
-  return centroid_damping.apply(lmp, vel, outward_normal, velocity,
-                                [&](int i, int w, const double *fi) {
-                                  for (int k = 0; k < 3; k++) {
-                                    f[i][k] += fi[k];
-                                    local[3 * w + k] -= fi[k];
-                                  }
-                                  if (tally) {
-                                    double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-                                    add_wall_virial(w, x[i], fi, vir);
-                                    v_tally(i, vir);
-                                  }
-                                });
+  centroid_damping.apply(lmp, vel, outward_normal, velocity, [&](int i, int w, const double *fi) {
+    for (int k = 0; k < 3; k++) {
+      f[i][k] += fi[k];
+      local[3 * w + k] -= fi[k];
+    }
+    if (count_work)
+      keep_work(i, fi, fi[0] * velocity[w][0] + fi[1] * velocity[w][1] + fi[2] * velocity[w][2]);
+    if (tally) {
+      double vir[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      add_wall_virial(w, x[i], fi, vir);
+      v_tally(i, vir);
+    }
+  });
 }
 
 /* ----------------------------------------------------------------------

@@ -50,6 +50,7 @@ class FixPeridemWall : public Fix {
   void post_integrate() override;
   void post_force(int) override;
   void post_force_respa(int, int, int) override;
+  void end_of_step() override;
   void min_post_force(int) override;
   void post_run() override;
   double compute_scalar() override;
@@ -92,7 +93,7 @@ class FixPeridemWall : public Fix {
   std::vector<peridem::ContactParams> type_params;
   // contact pair: pair_coeff I I with damping centroid also damps grain centres at the walls
   PERIDEM_NS::WallCentroidDamping centroid_damping;
-  double apply_centroid_damping(const double *vel);
+  void apply_centroid_damping(const double *vel, bool count_work);
   void add_wall_virial(int w, const double *xi, const double *fw, double *vir) const;
   int lost_error;       // 1: a node beyond a wall ends the run, 0: counted and warned
   int lost_delete;      // 1: nodes beyond a wall or the box are deleted with their bonds
@@ -109,6 +110,15 @@ class FixPeridemWall : public Fix {
   int reduced;
   double dissipated_local; // energy dissipated by this rank's nodes since the start
   bigint lost_local;       // node-steps beyond a wall on this rank during this run
+  // the damping and friction forces of the last step on this rank's nodes, for their work with
+  // the full-step velocities at the end of the step (end_of_step)
+  std::vector<int> work_node;     // the nodes
+  std::vector<double> work_force; // their dissipative forces (3 each)
+  double work_wall = 0.0;         // sum of those forces . the velocity of their wall
+  bigint work_step = -1;          // the step of those forces (-1: none to count)
+  double power_prev = 0.0;        // this rank's power of those forces in the step before
+  void keep_work(int i, const double *f, double wall_rate);
+  double dissipative_power() const; // this rank's power of the kept forces at v now
 
   static int face_index(const std::string &name);
   int parse_face(const char *word) const;

@@ -81,6 +81,10 @@ template <typename C> void reverse(C *comm, LAMMPS_NS::Compute *compute, int, lo
 {
   comm->reverse_comm_compute(compute);
 }
+template <typename C> void reverse(C *comm, LAMMPS_NS::Pair *pair, int, long)
+{
+  comm->reverse_comm_pair(pair);
+}
 template <typename C, typename F> void reverse_variable(C *comm, F *fix, long)
 {
   comm->reverse_comm_fix_variable(fix);
@@ -111,7 +115,7 @@ template <typename M> bool has_fix_style(M *modify, const std::string &style, lo
 }
 } // namespace compat_detail
 
-// Forward (owned -> ghost) and reverse (ghost -> owner) communication of a fix or compute
+// Forward (owned -> ghost) and reverse (ghost -> owner) communication of a fix, compute or pair
 // through its pack/unpack functions.
 inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix, int size = 0)
 {
@@ -128,6 +132,10 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Compute *compute)
 inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Compute *compute)
 {
   compat_detail::reverse(comm, compute, 0, 0);
+}
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
+{
+  compat_detail::reverse(comm, pair, 0, 0);
 }
 // reverse communication with a per-atom size (Fix::pack_reverse_comm_size)
 inline void reverse_comm_variable(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix)

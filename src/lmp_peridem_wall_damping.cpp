@@ -11,7 +11,6 @@
 #include "lmp_peridem_grains.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "lammps.h"
 
 #include <algorithm>
@@ -37,9 +36,9 @@ double WallCentroidDamping::max_reach() const
   return r;
 }
 
-double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
-                                  const double (*outward)[3], const double (*wall_velocity)[3],
-                                  const std::function<void(int, int, const double *)> &on_force)
+void WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
+                                const double (*outward)[3], const double (*wall_velocity)[3],
+                                const std::function<void(int, int, const double *)> &on_force)
 {
   MPI_Comm world = lmp->world;
 
@@ -52,7 +51,7 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
   touch_local.erase(std::unique(touch_local.begin(), touch_local.end(), same), touch_local.end());
   const int mine = 3 * (int)touch_local.size();
   const int total = LAMMPS_NS::PERIDEM_NS::gather_counts(world, mine, counts, displs);
-  if (total == 0) return 0.0;
+  if (total == 0) return;
   touch_all.resize(total / 3);
   MPI_Allgatherv(touch_local.empty() ? nullptr : touch_local[0].data(), mine, MPI_LMP_TAGINT,
                  touch_all[0].data(), counts.data(), displs.data(), MPI_LMP_TAGINT, world);
@@ -82,7 +81,6 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
   MPI_Allreduce(sum_local.data(), sum_all.data(), 4 * ng, MPI_DOUBLE, MPI_SUM, world);
 
   // the dashpot of each touch (eq. 26-28, wall as the opposite particle)
-  double power = 0.0;
   force.assign(3 * touch_all.size(), 0.0);
   // begin[g]: the first touch of grain g (touch_all is sorted by grain)
   std::vector<std::size_t> begin(ng, touch_all.size());
@@ -99,7 +97,7 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
     // eq. 29 with M_p' -> infinity: 2 M_p M_p'/(M_p + M_p') -> 2 M_p
     const double beta =
         peridem::restitution_damping_coefficient(p.eps_n, p.C, p.kappa_eff, p.Rc, 2.0 * M);
-    power += peridem::centroid_damping_force(outward[w], vrel, beta, true, &force[3 * n]);
+    peridem::centroid_damping_force(outward[w], vrel, beta, true, &force[3 * n]);
   }
 
   // eq. 30 as between grains: the share m_x/M_p of each force to every node of the grain
@@ -114,7 +112,6 @@ double WallCentroidDamping::apply(LAMMPS_NS::LAMMPS *lmp, const double *vel,
       on_force(i, (int)touch_all[n][1], f);
     }
   }
-  return lmp->comm->me == 0 ? power : 0.0;
 }
 
 } // namespace PERIDEM_NS

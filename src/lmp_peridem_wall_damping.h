@@ -19,8 +19,9 @@
    centroid_range) of the wall, with beta_bar from eq. 28 and
    M_eq = 2 M_p (eq. 29 for a partner of infinite mass). Every node x of
    the grain gets the share m_x/M_p of F (as pair_style peridem/contact
-   does between grains), so the dashpot only decelerates the centre and
-   dissipates exactly F . (v_c - v_wall).
+   does between grains), so the dashpot only decelerates the centre: the
+   work of the shares, sum_x (m_x/M_p) F . (v_x - v_wall), is that of F on
+   the centre, F . (v_c - v_wall).
 
    Every rank gathers all (grain, wall) touches and sums the centre
    velocities of those grains, so all ranks compute the same forces in
@@ -63,10 +64,10 @@ class WallCentroidDamping {
 
   // The forces of all touches: on_force(i, w, f) is called for every local node i of a touching
   // grain and every wall w it touches, f the node's share; outward[w] is the wall's outward normal,
-  // wall_velocity[w] its velocity. Returns the power of the dashpots on rank 0 (<= 0), 0 elsewhere.
-  double apply(LAMMPS_NS::LAMMPS *lmp, const double *velocities, const double (*outward)[3],
-               const double (*wall_velocity)[3],
-               const std::function<void(int, int, const double *)> &on_force);
+  // wall_velocity[w] its velocity. (The caller counts their work with the nodes' velocities.)
+  void apply(LAMMPS_NS::LAMMPS *lmp, const double *velocities, const double (*outward)[3],
+             const double (*wall_velocity)[3],
+             const std::function<void(int, int, const double *)> &on_force);
 
  private:
   bool enabled = false;

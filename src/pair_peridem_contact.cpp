@@ -41,6 +41,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "output.h"
 #include "update.h"
 
 #include "lmp_peridem_compat.h"
@@ -80,6 +81,15 @@ PairPeridemContact::PairPeridemContact(LAMMPS *lmp)
   broken_pair_sink = [this](int i, int j) {
     if (pairs_copied) pairs.push_back(i < atom->nlocal ? NodePair{i, j} : NodePair{j, i});
   };
+  // the ghosts' shares of the dissipative forces go home (newton_pair on)
+  comm_reverse = 3;
+  // a restart file holds rank 0's share: before one can be written (restart N in a run, or
+  // write_restart after it), rank 0 takes the shares of all ranks
+  step_end = [this]() {
+    count_work();
+    if (update->ntimestep == output->next_restart) fold_dissipated();
+  };
+  run_end = [this]() { fold_dissipated(); };
 }
 
 PairPeridemContact::~PairPeridemContact()
@@ -205,14 +215,18 @@ void PairPeridemContact::compute(int eflag, int vflag)
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
-  const double dt = update->dt;
 
   // the pairs of the neighbour list, copied when LAMMPS has just built it (neighbor->ago is 0
   // in the step of every build: runs, minimisation, each snapshot of rerun)
   if (neighbor->ago == 0 || !pairs_copied) copy_neighbour_pairs();
   const int npairs = int(pairs.size());
 
-  double dissipated_now = 0.0;
+  // the dissipative forces per node, for their work with the full-step velocities (count_work):
+  // in every step of a run and in its setup (the first end of the trapezoid), not in a
+  // minimisation. With newton_pair off a pair across ranks is computed on both ranks: each
+  // gives its owned node its share.
+  const bool keep_fdis = history && update->whichflag == 1;
+  if (keep_fdis) start_fdis();
   touch_local.clear();
   peridem::ContactInput in;
 
@@ -245,23 +259,113 @@ void PairPeridemContact::compute(int eflag, int vflag)
     PERIDEM_NS::add_force(f, i, res.f[0], res.f[1], res.f[2]);
     const bool both = newton || j < nlocal;
     if (both) PERIDEM_NS::add_force(f, j, -res.f[0], -res.f[1], -res.f[2]);
-    // a pair across ranks with newton off is computed on both ranks
-    dissipated_now -= res.power * dt * (both ? 1.0 : 0.5);
+    if (keep_fdis) {
+      const double g[3] = {res.f_damp[0] + res.f_fric[0], res.f_damp[1] + res.f_fric[1],
+                           res.f_damp[2] + res.f_fric[2]};
+      add_fdis(i, g[0], g[1], g[2]);
+      if (both) add_fdis(j, -g[0], -g[1], -g[2]);
+    }
     if (evflag)
       ev_tally_xyz(i, j, nlocal, newton, res.energy, 0.0, res.f[0], res.f[1], res.f[2], -dx, -dy,
                    -dz);
   }
-  // the forces of a run's setup are computed again in its first step: count
-  // the dissipation of steps only (a restart in mid-contact adds nothing)
-  if (!update->setupflag) dissipated += dissipated_now;
   // global virial as sum f . r of the node pairs (newton on); the centroid
   // dashpots below tally their own, from the unwrapped centres
   // (virial_fdotr_compute() clears vflag_fdotr: decide the centroid tally first, or
   // the centroid dashpots were left out of the virial with newton_pair on)
   const bool centroid_virial = vflag_global || vflag_fdotr;
   if (vflag_fdotr) virial_fdotr_compute();
-  if (centroid_on) compute_centroid_damping(centroid_virial);
+  if (centroid_on) compute_centroid_damping(centroid_virial, keep_fdis);
+  if (keep_fdis && newton) PERIDEM_NS::reverse_comm(comm, this);
+  // a setup has v(n) already: the power of the step it continues, or of the state it starts from
+  if (keep_fdis && update->setupflag) power_prev = dissipative_power();
+  if (keep_fdis && !update->setupflag) fdis_step = update->ntimestep;
+}
+
+// clears the slots of the last call and makes room for every atom slot
+void PairPeridemContact::start_fdis()
+{
+  for (const int i : fdis_slots)
+    fdis[3 * std::size_t(i)] = fdis[3 * std::size_t(i) + 1] = fdis[3 * std::size_t(i) + 2] = 0.0;
+  fdis_slots.clear();
+  const std::size_t nmax = atom->nmax;
+  if (fdis_mark.size() < nmax) {
+    fdis.resize(3 * nmax, 0.0);
+    fdis_mark.resize(nmax, 0);
+  }
+  if (++fdis_call == std::numeric_limits<int>::max()) {
+    std::fill(fdis_mark.begin(), fdis_mark.end(), 0);
+    fdis_call = 1;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the work of the dissipative forces (damping, friction, centroid dashpot)
+   with the full-step velocities of velocity Verlet: with P(n) = sum_i
+   F_i(n) . v_i(n), F_i(n) those forces on node i in step n (they take
+   v(n - 1/2)) and v_i(n) its velocity after the second half-kick, each
+   step adds -(P(n - 1) + P(n)) dt/2 (peridem::dissipated_in_step: the
+   trapezoidal rule, by which the integrator changes the kinetic energy), so
+   E + dissipated is as constant as E alone is without damping and
+   friction. The power at the velocities the forces take, F(n) . v(n - 1/2),
+   counts stuck contacts wrong: a friction force that reverses a node's
+   velocity u in one step (v(n + 1/2) = -u) takes no energy, but
+   -F . v(n - 1/2) dt = 2 m |u|^2 counts it as lost, at every step at a node
+   held by several contacts, where the force flips while the node hardly
+   moves (17x the energy balance in examples/sheared-fault); v(n + 1/2) would
+   count it as gained. v(n) = 0 there; a force that stops a node
+   (v(n + 1/2) = 0) counts the kinetic energy m |u|^2/2 it takes. The work
+   is negative where the forces feed energy in, as the regularized stick
+   branch does at a node stuck to three partners or more
+   (peridem_contact_law.h). P(n - 1) of a run's first step is that of its
+   setup, which computes the forces of the step it continues (the same
+   P(n), so a split or restarted run adds up as one), or of a fresh start.
+   Atoms do not change ranks or places between the force and here;
+   power_prev is a rank's share of a sum, which migration does not change.
+------------------------------------------------------------------------- */
+
+double PairPeridemContact::dissipative_power() const
+{
+  const double *v = atom->v ? atom->v[0] : nullptr;
+  const int nlocal = atom->nlocal;
+  double power = 0.0;
+  for (const int i : fdis_slots) {
+    if (i >= nlocal) continue; // a ghost: its share went home
+    const double *fd = &fdis[3 * std::size_t(i)], *vi = v + 3 * std::size_t(i);
+    power += fd[0] * vi[0] + fd[1] * vi[1] + fd[2] * vi[2];
+  }
+  return power;
+}
+
+void PairPeridemContact::count_work()
+{
+  if (fdis_step != update->ntimestep) return;
+  fdis_step = -1;
+  dissipated += peridem::dissipated_in_step(power_prev, dissipative_power(), update->dt);
   pvector[0] = dissipated;
+}
+
+void PairPeridemContact::fold_dissipated()
+{
+  double total = 0.0;
+  MPI_Allreduce(&dissipated, &total, 1, MPI_DOUBLE, MPI_SUM, world);
+  dissipated = comm->me == 0 ? total : 0.0;
+  pvector[0] = dissipated;
+}
+
+int PairPeridemContact::pack_reverse_comm(int n, int first, double *buf)
+{
+  const double *fd = fdis.data() + 3 * std::size_t(first);
+  std::copy(fd, fd + 3 * n, buf);
+  return 3 * n;
+}
+
+void PairPeridemContact::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) {
+    const double *b = buf + 3 * k;
+    if (b[0] != 0.0 || b[1] != 0.0 || b[2] != 0.0) add_fdis(list[k], b[0], b[1], b[2]);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -274,9 +378,11 @@ void PairPeridemContact::compute(int eflag, int vflag)
    we use the mass share F m_x/M_p, the same for a grain of uniform density,
    so that the dashpot only decelerates the centre (all nodes of the grain
    get the acceleration F/M_p) and its power is exactly F . (v_c - v_c').
+   keep_fdis: the nodal shares are kept with the other dissipative forces,
+   for their work at the end of the step (count_work).
 ------------------------------------------------------------------------- */
 
-void PairPeridemContact::compute_centroid_damping(bool tally_virial)
+void PairPeridemContact::compute_centroid_damping(bool tally_virial, bool keep_fdis)
 {
   // the grain pairs in contact, from all ranks, sorted and unique (one entry
   // per grain pair, the smallest type pair), so that every rank and every
@@ -304,7 +410,6 @@ void PairPeridemContact::compute_centroid_damping(bool tally_virial)
   const int ngrains = (int)grain_ids.size();
   grain_force.assign(3 * ngrains, 0.0);
   const bool tally = tally_virial && comm->me == 0;
-  double power = 0.0;
   for (const auto &t : touch_all) {
     const int a = grain_index(t[0]), b = grain_index(t[1]);
     if (a < 0 || b < 0) continue;
@@ -320,7 +425,7 @@ void PairPeridemContact::compute_centroid_damping(bool tally_virial)
     const double m_eq = peridem::harmonic_mean(sa[0], sb[0]); // eq. 29
     const double beta =
         peridem::restitution_damping_coefficient(p.eps_n, p.C, p.kappa_eff, p.Rc, m_eq);
-    power += peridem::centroid_damping_force(sep, vrel, beta, true, fc);
+    peridem::centroid_damping_force(sep, vrel, beta, true, fc);
     for (int k = 0; k < 3; k++) {
       grain_force[3 * a + k] += fc[k];
       grain_force[3 * b + k] -= fc[k];
@@ -335,9 +440,6 @@ void PairPeridemContact::compute_centroid_damping(bool tally_virial)
       virial[5] -= fc[1] * sep[2];
     }
   }
-  // every rank computed the same grain forces: rank 0 counts their work
-  if (comm->me == 0 && !update->setupflag) dissipated -= power * update->dt;
-
   // eq. 30: the share m_x/M_p of the force on grain p to each of its nodes
   double **f = atom->f;
   const double *rmass = atom->rmass;
@@ -350,6 +452,7 @@ void PairPeridemContact::compute_centroid_damping(bool tally_virial)
     f[i][0] += share * fg[0];
     f[i][1] += share * fg[1];
     f[i][2] += share * fg[2];
+    if (keep_fdis) add_fdis(i, share * fg[0], share * fg[1], share * fg[2]);
   }
 }
 
@@ -956,6 +1059,10 @@ void *PairPeridemContact::extract(const char *str, int &dim)
   dim = 0;
   if (strcmp(str, "dissipated") == 0) return (void *)&dissipated;
   if (strcmp(str, "peridem_broken_pair") == 0) return (void *)&broken_pair_sink;
+  // for fix peridem/vhistory: count_work at the end of each step, fold_dissipated at the end of
+  // each run
+  if (strcmp(str, "peridem_step_end") == 0) return (void *)&step_end;
+  if (strcmp(str, "peridem_run_end") == 0) return (void *)&run_end;
   // per type t: the law of pair_coeff t t (Kn = 0 where it is not set), for fix peridem/wall
   // 'contact pair'
   if (strcmp(str, "peridem_contact_params") == 0) {
@@ -980,7 +1087,11 @@ void *PairPeridemContact::extract(const char *str, int &dim)
 double PairPeridemContact::memory_usage()
 {
   return Pair::memory_usage() + spec.size() * spec.size() * sizeof(PERIDEM_NS::ContactSpec) +
-         (grain_local.capacity() + grain_sum.capacity() + grain_force.capacity()) * sizeof(double) +
-         (grain_table.capacity() + grain_of.capacity()) * sizeof(int) +
+         (grain_local.capacity() + grain_sum.capacity() + grain_force.capacity() +
+          fdis.capacity()) *
+             sizeof(double) +
+         (grain_table.capacity() + grain_of.capacity() + fdis_mark.capacity() +
+          fdis_slots.capacity()) *
+             sizeof(int) +
          grain_ids.capacity() * sizeof(tagint);
 }

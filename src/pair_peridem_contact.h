@@ -49,6 +49,8 @@ class PairPeridemContact : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
 
   // the contact law of a type pair (after pair_coeff), e.g. for walls
   const PERIDEM_NS::ContactSpec &type_spec(int i, int j) const { return spec[i][j]; }
@@ -67,7 +69,35 @@ class PairPeridemContact : public Pair {
   double **cut;      // contact radius of each type pair (or centroid_range)
   double **touchsq;  // squared distance below which grains touch (damping centroid)
   int self_contact;  // 1: nodes of one grain without an intact bond touch too
-  double dissipated; // energy dissipated by damping and friction on this rank
+  double dissipated; // this rank's share of the energy dissipated by damping and friction
+  // the work of the dissipative forces (damping, friction, centroid dashpot) with the full-step
+  // velocities: their sum per node in compute() (owned and, with newton_pair, ghost nodes, whose
+  // shares go home by reverse communication), counted at the end of the step (count_work).
+  // Few nodes touch in a bed: the slots written are listed, cleared and summed, not all atoms.
+  std::vector<double> fdis;    // 3 per atom slot, flat; 0 except in the listed slots
+  std::vector<int> fdis_mark;  // per slot: the compute call that last wrote it
+  std::vector<int> fdis_slots; // the slots written by the last compute call
+  int fdis_call = 0;           // compute calls that kept the forces
+  bigint fdis_step = -1;       // the step whose forces fdis holds (-1: none to count)
+  double power_prev = 0.0;     // this rank's P(n - 1) = sum F . v(n - 1) of the step before
+  void start_fdis();
+  void add_fdis(int i, double fx, double fy, double fz)
+  {
+    if (fdis_mark[i] != fdis_call) {
+      fdis_mark[i] = fdis_call;
+      fdis_slots.push_back(i);
+    }
+    double *fd = &fdis[3 * std::size_t(i)];
+    fd[0] += fx;
+    fd[1] += fy;
+    fd[2] += fz;
+  }
+  double dissipative_power() const; // this rank's sum of fdis . v over its nodes
+  // called by fix peridem/vhistory at the end of each step and of each run (extract
+  // "peridem_step_end", "peridem_run_end")
+  std::function<void()> step_end, run_end;
+  void count_work();
+  void fold_dissipated(); // the shares of all ranks onto rank 0 (restart files hold rank 0's)
   std::vector<peridem::ContactParams> diag_params; // extract("peridem_contact_params")
   std::vector<double> diag_reach;                  // extract("peridem_centroid_reach")
 
@@ -119,7 +149,7 @@ class PairPeridemContact : public Pair {
   int grain_index(tagint id) const; // -1 if unknown
   void build_grain_index();
   void sum_grain_centres();
-  void compute_centroid_damping(bool tally_virial);
+  void compute_centroid_damping(bool tally_virial, bool keep_fdis);
   // centroid_bounding: grain pairs by the distance of their centres (Jha et al.'s code)
   int bounding_on = 0;          // some type pair uses centroid_bounding
   bool bounding_stale = true;   // recompute bounding and grain_type before the next use

@@ -53,8 +53,10 @@
 //    rho V_x for a rigid partner (walls) and is symmetric.  The restitution formula Jha et al.
 //    2021, eq. (23) keeps its own m_eq = harmonic mean = 2 m_red (eq. 24).
 //  * The stick branch of eq. (4.3) cancels the tangential relative velocity of ONE pair in one
-//    step; a node sticking to several partners at once can still overshoot (inherent to a
-//    pairwise law; the wall applies one friction term per wall).
+//    step; a node sticking to several partners at once overshoots (inherent to a pairwise law;
+//    the wall applies one friction term per wall): against k rigid partners its tangential
+//    velocity goes from v_t to -(k - 1) v_t, reversed for k = 2, grown (energy fed in, until
+//    the pairs slip) for k >= 3. The styles count that work as negative dissipation.
 //  * Damping acts only while the nodes approach (vn > 0) as Jha et al. 2021, eq. (22), (27) state;
 //    Bhattacharya & Lipton 2023, eq. (4.5) (Kelvin-Voigt) damps both ways:
 //    ContactParams::damp_approach_only.
@@ -274,6 +276,25 @@ ContactResult contact_force(const ContactInput &in, const ContactParams &p);
 // share F V_x/|Omega_p|.  Returns the power F . (v_c - v_c') (<= 0).
 double centroid_damping_force(const double sep_c[3], const double vrel_c[3], double beta_bar,
                               bool in_contact, double f[3]);
+
+// ---------------------------------------------------------------------------------------
+// Dissipated energy
+// ---------------------------------------------------------------------------------------
+// The energy that forces dissipate in step n of velocity Verlet, from their power at the
+// full-step velocities, P(n) = sum_i F_i(n) . v_i(n) (v after the second half-kick):
+// -(P(n - 1) + P(n)) dt/2, the trapezoidal rule, which is how the integrator changes the
+// kinetic energy: m/2 (|v(n)|^2 - |v(n - 1)|^2) = (F(n - 1) . v(n - 1) + F(n) . v(n)) dt/2 -
+// dt^2/(8m) (|F(n)|^2 - |F(n - 1)|^2) for the total force, the last term telescoping over a
+// run (Swope et al. 1982 for the velocity form of Verlet's scheme). `previous` holds P(n - 1)
+// and becomes P(n). pair_style peridem/contact and fix peridem/wall count their damping and
+// friction this way (the power at v(n - 1/2), which those forces take, counts a force that
+// only reverses a velocity as a loss).
+inline double dissipated_in_step(double &previous, double power, double dt)
+{
+  const double dissipated = -0.5 * (previous + power) * dt;
+  previous = power;
+  return dissipated;
+}
 
 // ---------------------------------------------------------------------------------------
 // Stable time step

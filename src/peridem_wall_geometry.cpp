@@ -400,7 +400,9 @@ WallContactResult wall_contact_force(const WallBox &box, const WallContactInput 
     for (int k = 0; k < 3; ++k) {
       const double fdis = cr.f_damp[k] + cr.f_fric[k];
       res.f[k] += fdis;
+      res.f_dis[k] += fdis;
       res.f_wall[w][k] -= fdis;
+      res.wall_power += fdis * in.wall_velocity[w][k];
     }
     res.power += cr.power;
   }

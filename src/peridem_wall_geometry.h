@@ -140,12 +140,17 @@ struct WallContactInput {
   double vol = 0.0, mass = 0.0, dt = 0.0;
   double wall_velocity[kMaxWalls][3] = {}; // velocity of each wall (damping, friction)
 };
+// f_dis and wall_power split the power, so that a caller can count the work of the damping and
+// friction forces F_w with another node velocity v' (fix peridem/wall: v(n) of velocity Verlet):
+// f_dis . v' - wall_power.
 struct WallContactResult {
-  double f[3] = {0.0, 0.0, 0.0};    // total force on the node
-  double energy = 0.0;              // repulsion energy (see doc block)
-  double power = 0.0;               // dissipation rate, sum over walls of F_w . (v - v_w) <= 0
-  double f_wall[kMaxWalls][3] = {}; // reaction: force exerted BY the node ON each wall
-  double min_distance = 0.0;        // smallest signed distance to an active wall
+  double f[3] = {0.0, 0.0, 0.0};     // total force on the node
+  double energy = 0.0;               // repulsion energy (see doc block)
+  double power = 0.0;                // dissipation rate, sum over walls of F_w . (v - v_w) <= 0
+  double f_dis[3] = {0.0, 0.0, 0.0}; // damping + friction of all walls, sum_w F_w
+  double wall_power = 0.0;           // sum_w F_w . v_w: power = f_dis . v - wall_power
+  double f_wall[kMaxWalls][3] = {};  // reaction: force exerted BY the node ON each wall
+  double min_distance = 0.0;         // smallest signed distance to an active wall
   int n_partners = 0;
 };
 WallContactResult wall_contact_force(const WallBox &box, const WallContactInput &in,

@@ -21,9 +21,11 @@ Checks:
    mean is below 0.75 of it (friction on);
 4. friction off gives a lower mean mu than friction on;
 5. energy: the dissipated energy Q = W - dE (work of the driving force less the change of
-   kinetic and potential energy) is positive; without friction it is at least the contact
-   damping's dissipation, since broken bonds take their stored energy with them. (With
-   friction the pair's estimate overcounts stuck contacts: doc/pair_peridem_contact.rst.)
+   kinetic and potential energy) is positive and, with friction on and off, at least the
+   contacts' dissipation (compute pair peridem/contact), since broken bonds take their
+   stored energy with them (to 0.1 %: the contacts' share is counted to the integrator's
+   accuracy). The power at v(n - 1/2) that the pair counted before gave more than Q with
+   friction (823 against 802 J/m) by counting each flip of a stuck contact's force.
 
   check_fault.py --lmp LMP [--np N] [--out DIR]
 """
@@ -127,13 +129,11 @@ def main():
           f"{late:.2f} < 0.75 of it")
     check(np.mean(mu_off) < np.mean(mu_on),
           f"mean mu: friction off {np.mean(mu_off):.3f} < friction on {np.mean(mu_on):.3f}")
-    q_on = data["on"][-1, 12]
-    check(q_on > 0, f"friction on: dissipated Q = W - dE {q_on:.1f} J/m > 0")
-    full = data["off"]
-    q, qc = full[-1, 12], full[-1, 13] - full[0, 13]
-    check(q >= 0.97 * qc and q > 0,
-          f"friction off: dissipated Q = W - dE {q:.1f} J/m >= the contact damping's "
-          f"{qc:.1f} J/m (within the 3 % integration error)")
+    for key in RUNS:
+        q, qc = data[key][-1, 12], data[key][-1, 13]
+        check(0 < qc <= 1.001 * q,
+              f"friction {key}: dissipated Q = W - dE {q:.1f} J/m >= the contacts' share "
+              f"{qc:.1f} J/m > 0 (the rest: energy of broken bonds)")
     if fails:
         print(f"PERIDEM-FAIL sheared fault: {len(fails)} check(s)")
         return 1

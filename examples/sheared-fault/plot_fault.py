@@ -15,9 +15,9 @@
 
   plot_fault.py DIR [--out PREFIX] [--h 1e-3] [--L 0.1] [--H 0.1] [--layer 3] [--v 2] [--csv]
 
-Q is the dissipated energy from the balance W - dE (the pair's own estimate, the series'
-Q_contact column, overcounts stuck contacts: doc/pair_peridem_contact.rst); Q / (p L v t) is the
-friction coefficient that would dissipate it by sliding.
+Q is the dissipated energy from the balance W - dE (the series' Q_contact column is the part
+of it that contact damping and friction took); Q / (p L v t) is the friction coefficient that
+would dissipate it by sliding.
 """
 import argparse
 import glob

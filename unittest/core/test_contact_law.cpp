@@ -300,6 +300,69 @@ TEST(ContactLaw, StickStopsWithoutReversal)
   EXPECT_GT(nstick, 100);
 }
 
+// The stick branch is pairwise: each stuck pair removes the whole tangential relative
+// velocity, so a node stuck to k rigid partners at once gets k times the force that stops it,
+// and its tangential velocity goes from v to -(k - 1) v in one step: k = 2 reverses it (no
+// energy lost), k = 3 doubles it (energy fed in, until the pairs slip). pair_style
+// peridem/contact counts that work as negative dissipation (its count_work). The law is the
+// paper's (Bhattacharya & Lipton 2023, eq. 4.3); this test records the behaviour.
+TEST(ContactLaw, StickOfSeveralPartnersOvershoots)
+{
+  ContactParams p = base_params();
+  p.friction = ContactFriction::Regularized;
+  p.mu = 0.5;
+  const double v = 1e-9, mass = 1.0, dt = 1e-3; // |v| below v_thr = mu |F_r| dt/m: stuck
+  for (int k = 1; k <= 4; ++k) {
+    // k rigid partners around the node in the y-z plane, the node moving along x
+    double f = 0.0;
+    for (int n = 0; n < k; ++n) {
+      ContactInput in;
+      const double a = 2.0 * kPi * n / k;
+      in.sep[1] = 0.8 * p.Rc * std::cos(a);
+      in.sep[2] = 0.8 * p.Rc * std::sin(a);
+      in.vrel[0] = v;
+      in.vol_i = in.vol_j = 1e-3;
+      in.mass_i = mass;
+      in.dt = dt;
+      const ContactResult r = contact_force(in, p);
+      ASSERT_TRUE(r.stick) << k;
+      f += r.f[0];
+    }
+    EXPECT_NEAR(v + f * dt / mass, -(k - 1) * v, 1e-12 * v) << k;
+  }
+}
+
+// dissipated_in_step against velocity Verlet itself: a node under a dashpot and a stick force
+// that reverses its velocity once it is slow (two stuck partners at once), both taking
+// v(n - 1/2) as in the styles. The kinetic energy lost equals the dissipated energy to
+// round-off, up to the telescoped term dt^2/(8m) (|F_N|^2 - |F_0|^2); the power at v(n - 1/2)
+// counts every reversal as a loss, many times the energy there is.
+TEST(ContactLaw, DissipatedInStepClosesVelocityVerletsBalance)
+{
+  const double m = 2.0, c = 0.3, dt = 1e-2;
+  for (bool stick : {false, true}) {
+    auto force = [&](double vh) {
+      return -c * vh + (stick && std::fabs(vh) < 0.05 ? -2.0 * m * vh / dt : 0.0);
+    };
+    double v = 1.0, f = force(v);
+    const double e0 = 0.5 * m * v * v, f0 = f;
+    double previous = f * v, dissipated = 0.0, half_step = 0.0;
+    for (int n = 0; n < 5000; ++n) {
+      const double vhalf = v + 0.5 * dt * f / m;
+      f = force(vhalf);
+      v = vhalf + 0.5 * dt * f / m;
+      dissipated += dissipated_in_step(previous, f * v, dt);
+      half_step -= f * vhalf * dt;
+    }
+    const double lost = e0 - 0.5 * m * v * v - dt * dt / (8.0 * m) * (f * f - f0 * f0);
+    EXPECT_NEAR(dissipated, lost, 1e-12 * e0) << stick;
+    if (stick)
+      EXPECT_GT(half_step, 10.0 * e0);
+    else
+      EXPECT_NEAR(half_step, lost, 0.01 * e0); // first order in dt, but near
+  }
+}
+
 TEST(ContactLaw, DampingOnlyWhileApproaching)
 {
   for (auto d : {ContactDamping::Nodal, ContactDamping::Restitution}) {

@@ -402,6 +402,52 @@ TEST(WallGeometry2D, WallForceUsesContactLawAndReaction)
   EXPECT_NEAR(r.min_distance, 0.04, 1e-15);
 }
 
+// Moving walls: the damping and friction of each wall act on v - v_w, so their power is
+// f_dis . v - sum_w F_w . v_w (wall_power); fix peridem/wall counts the work with v(n) through
+// this split.
+TEST(WallGeometry2D, DissipativeForceAndWallPowerSplitThePower)
+{
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0), sv(-1.0, 1.0);
+  int tested = 0;
+  for (int dim : {2, 3})
+    for (int trial = 0; trial < 100; ++trial) {
+      WallBox box;
+      box.dimension = dim;
+      for (int k = 0; k < dim; ++k) box.hi[k] = 1.0;
+      for (int w = 0; w < 2 * dim; ++w) box.active[w] = true;
+      ContactParams cp;
+      cp.Kn = 1e4;
+      cp.Rc = 0.1;
+      cp.friction = trial % 2 ? ContactFriction::Coulomb : ContactFriction::Regularized;
+      cp.mu = 0.5;
+      cp.damping = ContactDamping::Nodal;
+      cp.r_d = 0.5;
+      cp.damp_approach_only = false;
+      WallContactInput in;
+      for (int k = 0; k < dim; ++k) {
+        in.x[k] = 0.1 * u(gen);
+        in.v[k] = sv(gen);
+      }
+      for (int w = 0; w < 2 * dim; ++w)
+        for (int k = 0; k < dim; ++k) in.wall_velocity[w][k] = 0.5 * sv(gen);
+      in.vol = 1e-3;
+      in.mass = 2e-3;
+      in.dt = 1e-3;
+      const WallContactResult r = wall_contact_force(box, in, cp);
+      double f2 = 0.0, fv = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        f2 += r.f_dis[k] * r.f_dis[k];
+        fv += r.f_dis[k] * in.v[k];
+      }
+      if (f2 == 0.0) continue; // beyond R_c of every wall
+      EXPECT_NEAR(fv - r.wall_power, r.power, 1e-12 * std::sqrt(f2)) << dim << " trial " << trial;
+      EXPECT_LE(r.power, 1e-12 * std::sqrt(f2)) << dim << " trial " << trial;
+      tested++;
+    }
+  EXPECT_GT(tested, 100);
+}
+
 TEST(WallGeometry2D, WallFrictionAndDampingDissipateNearCorners)
 {
   std::mt19937 gen(7);
@@ -433,6 +479,10 @@ TEST(WallGeometry2D, WallFrictionAndDampingDissipateNearCorners)
         for (int k = 0; k < 3; ++k) f2 += r.f[k] * r.f[k], v2 += in.v[k] * in.v[k];
         // each wall's damping + friction dissipates (eq. 4.3, 4.5 per wall)
         EXPECT_LE(r.power, 1e-12 * std::sqrt(f2 * v2)) << dim << " trial " << trial;
+        // f_dis and wall_power split the power: power = f_dis . v - wall_power (walls at rest)
+        const double split = r.f_dis[0] * in.v[0] + r.f_dis[1] * in.v[1] + r.f_dis[2] * in.v[2];
+        EXPECT_NEAR(split - r.wall_power, r.power, 1e-12 * std::sqrt(f2 * v2) + 1e-300);
+        EXPECT_EQ(r.wall_power, 0.0);
         // static walls: the reactions balance the force on the node
         for (int k = 0; k < 3; ++k) {
           double sum = r.f[k];
@@ -531,8 +581,9 @@ TEST(WallGeometry3D, CornerPartnersAndContinuity)
 }
 
 // The wall's normal tangent stiffness used by the time-step estimate (wall_contact_stiffness,
-// peridem_contact_law.h) is the second derivative of the wall potential of Bhattacharya & Lipton 2023, eq. (4.7):
-// checked by central differences of wall_potential in 2D and 3D over the contact range.
+// peridem_contact_law.h) is the second derivative of the wall potential of Bhattacharya & Lipton
+// 2023, eq. (4.7): checked by central differences of wall_potential in 2D and 3D over the contact
+// range.
 TEST(WallGeometry, ContactStiffnessIsPotentialCurvature)
 {
   const double Kn = 3.0, V = 0.7, R = 1.3;

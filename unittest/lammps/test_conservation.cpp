@@ -23,7 +23,7 @@
 //   of sum |m v| (measured).
 // * Dissipation: with damping and friction the energy lost equals the
 //   dissipated energy the pair style reports (compute pair, c_pc[1]) to the
-//   integrator's accuracy, converging as dt shrinks.
+//   integrator's accuracy, second order in dt as the undamped error.
 
 #include "lammps_fixture.h"
 
@@ -139,10 +139,11 @@ TEST_F(Conservation, DissipatedEnergyClosesTheBalance)
   std::printf("dissipated %.4e of E0 %.4e; balance error dt %.3e, dt/2 %.3e; momentum %.2e\n",
               coarse.dissipated, coarse.e0, coarse.max_dev / coarse.e0, fine.max_dev / fine.e0,
               coarse.p_err);
-  // the balance E + dissipated = E0 holds to the integrator's error, which converges
-  // (measured: 7.4 % of the dissipated energy at dt = 100 ns, 2.4 % at 50 ns, ratio 3.1;
-  // the energy oscillation of velocity Verlet is the same size without damping)
-  EXPECT_LT(fine.max_dev, 0.5 * coarse.max_dev);
-  EXPECT_LT(fine.max_dev, 0.05 * fine.dissipated);
+  // the balance E + dissipated = E0 holds to the integrator's error, second order in dt
+  // (measured: 2.5 % of the dissipated energy at dt = 100 ns, 0.59 % at 50 ns, ratio 4.3, the
+  // energy oscillation of velocity Verlet without damping; 7.4 %, 2.4 % and ratio 3.1 when the
+  // dissipation was counted with the half-step velocities the forces take)
+  EXPECT_GT(coarse.max_dev, 3.5 * fine.max_dev);
+  EXPECT_LT(fine.max_dev, 0.01 * fine.dissipated);
   EXPECT_LT(coarse.p_err, 1e-12);
 }

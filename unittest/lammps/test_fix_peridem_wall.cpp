@@ -205,7 +205,9 @@ TEST_F(FixPeridemWallTest, DropM1ContactConservesEnergy)
   }
 }
 
-// Energy loss grows with the damping ratio; the fix's dissipated energy closes the balance.
+// Energy loss grows with the damping ratio; the fix's dissipated energy closes the balance
+// (relative error below 3e-8 for every ratio; 5e-6 to 7.7e-5, growing with the ratio, when it
+// was counted with the half-step velocities the forces take).
 TEST_F(FixPeridemWallTest, DampingLossMonotone)
 {
   std::vector<double> losses;
@@ -219,7 +221,7 @@ TEST_F(FixPeridemWallTest, DampingLossMonotone)
     std::printf("[ measure  ] damping %-10s rebound loss %.4f, energy balance %.2e\n", damping,
                 loss, balance);
     if (!losses.empty()) EXPECT_GT(loss, losses.back()) << damping;
-    EXPECT_LT(std::fabs(balance), 1e-3) << damping;
+    EXPECT_LT(std::fabs(balance), 1e-6) << damping;
     losses.push_back(loss);
   }
 }

@@ -31,6 +31,15 @@ foreach(_np 1 2)
             -in ${_in}/bed_restart.in -log none -echo none
             -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag np${_np}
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  # the processors split the bed (x): contacts on both ranks
+  if(_np EQUAL 2)
+    add_test(NAME restart.bed_continue_split_np2
+      COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh 2 $<TARGET_FILE:lmp_peridem>
+              -in ${_in}/bed_restart.in -log none -echo none
+              -var potentials ${PROJECT_SOURCE_DIR}/potentials -var tag split_np2
+              -var procs "2 1 1"
+      WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+  endif()
   add_test(NAME restart.bed_continue_centroid_np${_np}
     COMMAND ${PERIDEM_RUN}/expect_pass.sh ${PERIDEM_RUN}/mpirun.sh ${_np} $<TARGET_FILE:lmp_peridem>
             -in ${_in}/bed_restart.in -log none -echo none
