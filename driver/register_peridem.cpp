@@ -33,6 +33,7 @@
 #include "cut_peridem_bonds.h"
 #include "fix_peridem_bonds.h"
 #include "fix_peridem_escapes.h"
+#include "fix_peridem_lps.h"
 #include "fix_peridem_order.h"
 #include "fix_peridem_vhistory.h"
 #include "fix_peridem_wall.h"
@@ -88,6 +89,7 @@ void for_each_style(StyleSink &sink)
   sink.pair("peridem/contact", &pair_creator<PairPeridemContact>);
   sink.fix("peridem/bonds", &fix_creator<FixPeridemBonds>);
   sink.fix("peridem/escapes", &fix_creator<FixPeridemEscapes>);
+  sink.fix("peridem/lps", &fix_creator<FixPeridemLPS>);
   sink.fix("peridem/order", &fix_creator<FixPeridemOrder>);
   sink.fix("peridem/wall", &fix_creator<FixPeridemWall>);
   sink.fix("peridem/vhistory", &fix_creator<FixPeridemVelocityHistory>);

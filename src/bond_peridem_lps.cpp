@@ -30,12 +30,14 @@
 #include "domain.h"
 #include "error.h"
 #include "fix_peridem_bonds.h"
+#include "fix_peridem_lps.h"
 #include "force.h"
 #include "memory.h"
 #include "neighbor.h"
 
 #include "lmp_peridem_bond_loop.h"
 #include "lmp_peridem_material.h"
+#include "lmp_peridem_own_fix.h"
 #include "lmp_peridem_parse.h"
 #include "lmp_peridem_restart.h"
 #include "peridem_lps_law.h"
@@ -59,7 +61,7 @@ const char *const PLANE[] = {"strain", "stress", "3d"};
 BondPeridemLPS::BondPeridemLPS(LAMMPS *lmp)
     : BondPeridemBase(lmp), bulk(nullptr), shear(nullptr), influence(nullptr),
       plane(peridem::LpsPlane::PlaneStrain), dfac(3.0), sum(nullptr), theta_over_m(nullptr),
-      inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1)
+      inv_m(nullptr), theta(nullptr), nmax_lps(0), check_wvolume(1), lps_fix(nullptr)
 {
   PERIDEM_NS::cite_peridem(lmp);
 }
@@ -134,7 +136,7 @@ void BondPeridemLPS::fill_cache()
 
 /* ----------------------------------------------------------------------
    m_i = sum_j omega beta r^2 V_j over the intact bonds (Jha et al. 2021, eq. 8), in
-   the reference configuration, once per node: kept by fix peridem/bonds
+   the reference configuration, once per node: kept by fix peridem/lps
    through migration and restarts, so that later breakage lowers theta but
    not m (as LAMMPS peri/lps's wvolume). A node without bonds (m = 0) is
    looked at again at the next run.
@@ -143,7 +145,7 @@ void BondPeridemLPS::fill_cache()
 void BondPeridemLPS::compute_weighted_volume()
 {
   check_wvolume = 0;
-  double *m = bonds_fix->weighted_volume();
+  double *m = lps_fix->weighted_volume();
   const int nlocal = atom->nlocal;
   int pending = 0;
   for (int i = 0; i < nlocal; i++)
@@ -162,7 +164,7 @@ void BondPeridemLPS::compute_weighted_volume()
     sum[i1] += lcache.wi[n] * lcache.r0[n];
     if (newton_bond || i2 < nlocal) sum[i2] += lcache.wj[n] * lcache.r0[n];
   }
-  if (newton_bond) bonds_fix->reverse_sum(sum);
+  if (newton_bond) lps_fix->reverse_sum(sum);
   const double *nbroken = bonds_fix->broken_count();
   bigint damaged = 0, damaged_all = 0;
   for (int i = 0; i < nlocal; i++)
@@ -203,8 +205,8 @@ void BondPeridemLPS::compute(int eflag, int vflag)
     planar ? dilation_pass<2, false>() : dilation_pass<3, false>();
 
   // (2) theta_i = (d/m_i) sum (Jha et al. 2021, eq. 34), complete on owners and ghosts
-  if (newton_bond) bonds_fix->reverse_sum(sum);
-  const double *m = bonds_fix->weighted_volume();
+  if (newton_bond) lps_fix->reverse_sum(sum);
+  const double *m = lps_fix->weighted_volume();
   for (int i = 0; i < nlocal; i++) {
     if (m[i] > 0.0) {
       inv_m[i] = 1.0 / m[i];
@@ -213,7 +215,7 @@ void BondPeridemLPS::compute(int eflag, int vflag)
     } else
       inv_m[i] = theta[i] = theta_over_m[i] = 0.0;
   }
-  bonds_fix->forward(theta_over_m, inv_m);
+  lps_fix->forward(theta_over_m, inv_m);
 
   // (3) force pass: steps with energy or virial, and LAMMPS's break order, one bond at a time
   // with z; the others without z in 2d (the same forces, to the bit)
@@ -540,6 +542,8 @@ void BondPeridemLPS::init_style()
     constants[i] = peridem::lps_constants(dimension, plane, bulk[i], shear[i]);
   }
   dfac = (dimension == 3 || plane == peridem::LpsPlane::ThreeD) ? 3.0 : 2.0;
+  // after the base's fixes: fix peridem/bonds may hold m of an older restart file for it
+  lps_fix = PERIDEM_NS::own_fix<FixPeridemLPS>(lmp, "peridem/lps", STYLE);
   check_wvolume = 1;
 }
 
@@ -656,7 +660,7 @@ double BondPeridemLPS::memory_usage()
    are partly stored on another rank gets a smaller m, hence a stiffer,
    still bounding spring; after breakage the force uses the reference m,
    which is larger than the intact sum, so the bound holds too. The stored
-   m of fix peridem/bonds is not used: the estimate is made in the pair
+   m of fix peridem/lps is not used: the estimate is made in the pair
    style's setup, before the first bond computation of the first run has
    summed it, and it is kept for owned nodes only (ghosts would need a
    communication). On one rank, before breakage and without bonds across a

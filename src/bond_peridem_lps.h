@@ -91,7 +91,8 @@ class BondPeridemLPS : public BondPeridemBase {
   // per atom (nmax): sum of the dilation pass, theta/m, 1/m, theta
   double *sum, *theta_over_m, *inv_m, *theta;
   int nmax_lps;
-  int check_wvolume; // see whether some node still needs its weighted volume
+  int check_wvolume;            // see whether some node still needs its weighted volume
+  class FixPeridemLPS *lps_fix; // m and the communication of the passes (init_style())
   void grow_lps();
   void compute_weighted_volume();
 

@@ -13,6 +13,7 @@
 
 #include "fix_peridem_bonds.h"
 #include "lmp_peridem_compat.h"
+#include "lmp_peridem_damage_column.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -30,21 +31,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-enum { COUNTS, PARTNERS, SUM };
+enum { COUNTS, PARTNERS };
 }
 
 /* ---------------------------------------------------------------------- */
 
 FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
-    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0),
-      wvolume(nullptr), comm_a(nullptr), comm_b(nullptr)
+    : Fix(lmp, narg, arg), nbroken(nullptr), zbroken(nullptr), broken_here(0), comm_mode(0)
 {
   PERIDEM_NS::check_own_fix(lmp, narg, this, ID, "bond_style peridem");
   restart_peratom = 1;
@@ -55,13 +56,11 @@ FixPeridemBonds::FixPeridemBonds(LAMMPS *lmp, int narg, char **arg)
   // next_reneighbor names a step only after a break (collect()).
   force_reneighbor = 1;
   next_reneighbor = -1;
-  comm_forward = 2;
-  maxexchange = 3;
+  maxexchange = 2;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   for (int i = 0; i < atom->nmax; i++) nbroken[i] = zbroken[i] = 0.0;
-  for (int i = 0; i < atom->nmax; i++) wvolume[i] = -1.0;
   adopt_data_file_damage();
 }
 
@@ -71,7 +70,6 @@ FixPeridemBonds::~FixPeridemBonds()
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(nbroken);
   memory->destroy(zbroken);
-  memory->destroy(wvolume);
 }
 
 int FixPeridemBonds::setmask()
@@ -89,12 +87,11 @@ void FixPeridemBonds::init()
   for (int i = 0; i < atom->nlocal && !any; i++) any = nbroken[i] > 0.0;
   MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
   wd_section = any_all;
-  // bond_style peridem/lps keeps m of the reference configuration: a data
-  // file must carry it, or m would be recomputed over the surviving bonds
-  any = 0;
-  for (int i = 0; i < atom->nlocal && !any; i++) any = wvolume[i] > 0.0;
-  MPI_Allreduce(&any, &any_all, 1, MPI_INT, MPI_MAX, world);
-  wd_wvolume = any_all;
+  wd_columns.clear();
+  for (int i = 0; i < modify->nfix; i++) {
+    auto *column = dynamic_cast<PERIDEM_NS::DamageSectionColumn *>(modify->fix[i]);
+    if (column && column->column_written()) wd_columns.push_back(column);
+  }
   // pair_style peridem/contact takes the nodes of a broken bond into its pair list at once
   // (it holds each pair once with newton_pair on; with newton_bond on, or on one rank, one
   // rank sees each break): no rebuild of the neighbour lists per break. Otherwise LAMMPS
@@ -257,10 +254,6 @@ int FixPeridemBonds::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
   for (int i = first; i < first + n; i++) {
-    if (comm_mode == SUM) {
-      buf[m++] = comm_a[i];
-      continue;
-    }
     if (comm_mode == COUNTS) {
       buf[m++] = nbroken[i];
       buf[m++] = zbroken[i];
@@ -283,10 +276,6 @@ void FixPeridemBonds::unpack_reverse_comm(int n, int *list, double *buf)
   int m = 0;
   for (int k = 0; k < n; k++) {
     const int j = list[k];
-    if (comm_mode == SUM) {
-      comm_a[j] += buf[m++];
-      continue;
-    }
     if (comm_mode == COUNTS) {
       nbroken[j] += buf[m++];
       zbroken[j] = std::max(zbroken[j], buf[m++]);
@@ -303,45 +292,39 @@ void FixPeridemBonds::grow_arrays(int nmax)
 {
   memory->grow(nbroken, nmax, "peridem/bonds:nbroken");
   memory->grow(zbroken, nmax, "peridem/bonds:zbroken");
-  memory->grow(wvolume, nmax, "peridem/bonds:wvolume");
 }
 
 void FixPeridemBonds::set_arrays(int i)
 {
   nbroken[i] = zbroken[i] = 0.0;
-  wvolume[i] = -1.0;
 }
 
 void FixPeridemBonds::copy_arrays(int i, int j, int)
 {
   nbroken[j] = nbroken[i];
   zbroken[j] = zbroken[i];
-  wvolume[j] = wvolume[i];
 }
 
 int FixPeridemBonds::pack_exchange(int i, double *buf)
 {
   buf[0] = nbroken[i];
   buf[1] = zbroken[i];
-  buf[2] = wvolume[i];
-  return 3;
+  return 2;
 }
 
 int FixPeridemBonds::unpack_exchange(int nlocal, double *buf)
 {
   nbroken[nlocal] = buf[0];
   zbroken[nlocal] = buf[1];
-  wvolume[nlocal] = buf[2];
-  return 3;
+  return 2;
 }
 
 int FixPeridemBonds::pack_restart(int i, double *buf)
 {
-  buf[0] = 4;
+  buf[0] = 3;
   buf[1] = nbroken[i];
   buf[2] = zbroken[i];
-  buf[3] = wvolume[i];
-  return 4;
+  return 3;
 }
 
 void FixPeridemBonds::unpack_restart(int nlocal, int nth)
@@ -351,76 +334,49 @@ void FixPeridemBonds::unpack_restart(int nlocal, int nth)
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   nbroken[nlocal] = extra[nlocal][m + 1];
   zbroken[nlocal] = extra[nlocal][m + 2];
-  wvolume[nlocal] = extra[nlocal][m + 3];
-  // a damaged file stops here, not in compute peridem/damage or the LPS force loop
-  const double nb = nbroken[nlocal], z = zbroken[nlocal], w = wvolume[nlocal];
-  if (!(nb >= 0.0 && nb <= 1e9 && nb == std::floor(nb)) || !(z >= 0.0 && std::isfinite(z)) ||
-      !(std::isfinite(w) && (w > 0.0 || w == -1.0)))
+  // the older layout (4 values): see take_old_restart_m()
+  if (static_cast<int>(extra[nlocal][m]) == 4) {
+    if (static_cast<int>(old_restart_m.size()) < atom->nlocal)
+      old_restart_m.resize(atom->nlocal, -1.0);
+    old_restart_m[nlocal] = extra[nlocal][m + 3];
+  }
+  // a damaged file stops here, not in compute peridem/damage
+  const double nb = nbroken[nlocal], z = zbroken[nlocal];
+  if (!(nb >= 0.0 && nb <= 1e9 && nb == std::floor(nb)) || !(z >= 0.0 && std::isfinite(z)))
     error->one(FLERR,
-               "fix {}: invalid damage state of atom {} in restart file (broken bonds {}, Z {}, "
-               "weighted volume {}; damaged file?)",
-               ID, atom->tag[nlocal], nb, z, w);
+               "fix {}: invalid damage state of atom {} in restart file (broken bonds {}, Z {}; "
+               "damaged file?)",
+               ID, atom->tag[nlocal], nb, z);
+}
+
+std::vector<double> FixPeridemBonds::take_old_restart_m()
+{
+  return std::exchange(old_restart_m, {});
 }
 
 int FixPeridemBonds::size_restart(int)
 {
-  return 4;
+  return 3;
 }
 
 int FixPeridemBonds::maxsize_restart()
 {
-  return 4;
+  return 3;
 }
 
 double FixPeridemBonds::memory_usage()
 {
-  return 3.0 * atom->nmax * sizeof(double);
-}
-
-/* ----------------------------------------------------------------------
-   per-atom sums of bond_style peridem/lps: ghost shares home (newton_bond
-   on), then the owners' values out to the ghosts
-------------------------------------------------------------------------- */
-
-void FixPeridemBonds::reverse_sum(double *a)
-{
-  comm_mode = SUM;
-  comm_a = a;
-  PERIDEM_NS::reverse_comm(comm, this, 1);
-}
-
-void FixPeridemBonds::forward(double *a, double *b)
-{
-  comm_a = a;
-  comm_b = b;
-  PERIDEM_NS::forward_comm(comm, this, 2);
-}
-
-int FixPeridemBonds::pack_forward_comm(int n, int *list, double *buf, int, int *)
-{
-  int m = 0;
-  for (int k = 0; k < n; k++) {
-    buf[m++] = comm_a[list[k]];
-    buf[m++] = comm_b[list[k]];
-  }
-  return m;
-}
-
-void FixPeridemBonds::unpack_forward_comm(int n, int first, double *buf)
-{
-  int m = 0;
-  for (int i = first; i < first + n; i++) {
-    comm_a[i] = buf[m++];
-    comm_b[i] = buf[m++];
-  }
+  return 2.0 * atom->nmax * sizeof(double);
 }
 
 /* ----------------------------------------------------------------------
    data files: the broken bonds are gone from the Bonds section,
    so write_data adds a section "PeridemDamage" with one line per node:
-   ID, number of broken bonds, Z of the broken bonds. read_data reads it
-   into a fix property/atom d_peridem_nbroken d_peridem_zbroken, which this
-   fix adopts when bond_style peridem creates it.
+   ID, number of broken bonds, Z of the broken bonds, the columns other
+   fixes add (fix peridem/lps: m). read_data reads it into a fix
+   property/atom d_peridem_nbroken d_peridem_zbroken (and the columns'
+   vectors), which this fix (and the columns' fixes) adopt when the bond
+   style creates them.
 ------------------------------------------------------------------------- */
 
 void FixPeridemBonds::adopt_data_file_damage()
@@ -452,24 +408,6 @@ void FixPeridemBonds::adopt_data_file_damage()
     zbroken[i] = zb[i];
     here += static_cast<bigint>(nb[i]);
   }
-  // the weighted volume m of bond_style peridem/lps (written when that
-  // style computed it): the LPS style keeps a positive m and computes the
-  // others
-  const int im = atom->find_custom("peridem_wvolume", flag, cols);
-  if (im >= 0) {
-    if (flag != 1 || cols != 0)
-      error->all(FLERR, "fix {}: per-atom property peridem_wvolume must be a d_ vector", ID);
-    const double *m = atom->dvector[im];
-    for (int i = 0; i < atom->nlocal; i++) {
-      // 0: a node without bonds when m was summed (written so), -1: not computed
-      if (!std::isfinite(m[i]) || (m[i] < 0.0 && m[i] != -1.0))
-        error->one(FLERR,
-                   "fix {}: invalid weighted volume {} of atom {} in the data file (need a "
-                   "finite m > 0, or 0 or -1 where it was not computed)",
-                   ID, m[i], atom->tag[i]);
-      wvolume[i] = m[i] > 0.0 ? m[i] : -1.0;
-    }
-  }
   check_damage_per_grain(nb);
   MPI_Allreduce(&here, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (comm->me == 0)
@@ -482,21 +420,19 @@ void FixPeridemBonds::adopt_data_file_damage()
 /* ----------------------------------------------------------------------
    per-atom vectors named like PERIDEM's damage but not as it reads them
    (d_nbroken instead of d_peridem_nbroken): the section went into them and
-   the damage would be 0 (and the LPS weighted volumes recomputed) without
-   a word
+   the damage would be 0 without a word
 ------------------------------------------------------------------------- */
 
 void FixPeridemBonds::refuse_misnamed_damage()
 {
   for (int k = 0; k < atom->ndvector; k++) {
     const std::string name = atom->dvname[k] ? atom->dvname[k] : "";
-    if (name.find("broken") == std::string::npos && name.find("wvolume") == std::string::npos)
-      continue;
+    if (name.find("broken") == std::string::npos) continue;
     if (comm->me == 0)
       error->warning(FLERR,
                      "fix {}: per-atom property {} looks like the damage of a {} section but is "
                      "not read, so the nodes start undamaged: name the vectors d_peridem_nbroken "
-                     "d_peridem_zbroken (and d_peridem_wvolume)",
+                     "d_peridem_zbroken",
                      ID, name, DATA_SECTION);
   }
 }
@@ -544,7 +480,7 @@ void FixPeridemBonds::check_damage_per_grain(const double *nb)
 void FixPeridemBonds::write_data_section_size(int, int &nx, int &ny)
 {
   nx = atom->nlocal;
-  ny = wd_wvolume ? 4 : 3;
+  ny = 3 + static_cast<int>(wd_columns.size());
 }
 
 void FixPeridemBonds::write_data_section_pack(int, double **buf)
@@ -553,29 +489,33 @@ void FixPeridemBonds::write_data_section_pack(int, double **buf)
     buf[i][0] = ubuf(atom->tag[i]).d;
     buf[i][1] = nbroken[i];
     buf[i][2] = zbroken[i];
-    if (wd_wvolume) buf[i][3] = wvolume[i];
+    for (std::size_t c = 0; c < wd_columns.size(); c++)
+      buf[i][3 + c] = wd_columns[c]->column_value(i);
   }
 }
 
 void FixPeridemBonds::write_data_section_keyword(int, FILE *fp)
 {
   // the column hint names the property/atom vectors that read it back
-  const char *props = wd_wvolume ? "d_peridem_nbroken d_peridem_zbroken d_peridem_wvolume"
-                                 : "d_peridem_nbroken d_peridem_zbroken";
+  std::string props = "d_peridem_nbroken d_peridem_zbroken", what;
+  for (const auto *column : wd_columns) {
+    props += std::string(" d_") + column->column_property();
+    what += std::string(", ") + column->column_description();
+  }
   fmt::print(fp, "\n{} # {}\n\n", DATA_SECTION, props);
   utils::logmesg(lmp,
                  "fix {}: the data file has a {} section (broken bonds per node{}); read it "
                  "back with\n  fix damage all property/atom {}\n"
                  "  read_data FILE fix damage NULL {}\n",
-                 ID, DATA_SECTION, wd_wvolume ? ", weighted volume m" : "", props, DATA_SECTION);
+                 ID, DATA_SECTION, what, props, DATA_SECTION);
 }
 
 void FixPeridemBonds::write_data_section(int, FILE *fp, int n, double **buf, int)
 {
-  for (int i = 0; i < n; i++)
-    if (wd_wvolume)
-      fmt::print(fp, "{} {} {:.17g} {:.17g}\n", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2],
-                 buf[i][3]);
-    else
-      fmt::print(fp, "{} {} {:.17g}\n", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2]);
+  const int ncol = 3 + static_cast<int>(wd_columns.size());
+  for (int i = 0; i < n; i++) {
+    fmt::print(fp, "{} {} {:.17g}", (tagint)ubuf(buf[i][0]).i, buf[i][1], buf[i][2]);
+    for (int c = 3; c < ncol; c++) fmt::print(fp, " {:.17g}", buf[i][c]);
+    fmt::print(fp, "\n");
+  }
 }

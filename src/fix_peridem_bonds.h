@@ -34,6 +34,9 @@ FixStyle(peridem/bonds,FixPeridemBonds);
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace PERIDEM_NS {
+class DamageSectionColumn;
+}
 
 class FixPeridemBonds : public Fix {
  public:
@@ -70,12 +73,11 @@ class FixPeridemBonds : public Fix {
   int pack_reverse_comm_size(int, int) override;
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
-  int pack_forward_comm(int, int *, double *, int, int *) override;
-  void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
 
-  // write_data: a PeridemDamage section (ID, broken count, Z) when any node
-  // has broken bonds; read back through fix property/atom (see doc)
+  // write_data: a PeridemDamage section (ID, broken count, Z, then the column of each fix
+  // that adds one, lmp_peridem_damage_column.h) when any node has broken bonds; read back
+  // through fix property/atom (see doc)
   void write_data_section_size(int, int &, int &) override;
   void write_data_section_pack(int, double **) override;
   void write_data_section_keyword(int, FILE *) override;
@@ -101,13 +103,10 @@ class FixPeridemBonds : public Fix {
     nbroken[i] += 1.0;
     stamp++;
   }
-  // state-based bonds (bond_style peridem/lps): the weighted volume m of each node in the
-  // reference configuration, kept through migration and restarts; < 0 until computed
-  double *weighted_volume() { return wvolume; }
-  // add the ghost entries of a per-atom array into their owners (newton_bond on)
-  void reverse_sum(double *a);
-  // copy two per-atom arrays from the owners to their ghosts
-  void forward(double *a, double *b);
+  // restart files written before fix peridem/lps existed end this fix's per-atom record
+  // with that fix's weighted volume m: kept here per local atom, for fix peridem/lps to take
+  // when its bond style creates it just after this one (empty with files of today's layout)
+  std::vector<double> take_old_restart_m();
 
  private:
   double *nbroken, *zbroken;
@@ -116,12 +115,12 @@ class FixPeridemBonds : public Fix {
   // indices lost this step; they travel home by reverse communication and
   // leave the special lists there
   std::unordered_map<int, std::vector<tagint>> lost_partners;
-  int comm_mode; // which reverse communication is under way
+  int comm_mode; // which reverse communication is under way: COUNTS or PARTNERS
   // pair_style peridem/contact's intake of the nodes of broken bonds (init()), or nullptr
   std::function<void(int, int)> *broken_pair_sink = nullptr;
-  int wd_wvolume = 0;      // the damage section also carries the LPS weighted volume m
-  double *wvolume;         // LPS weighted volume m (reference), < 0 until computed
-  double *comm_a, *comm_b; // the arrays of reverse_sum() and forward()
+  // the columns other fixes add to the damage section, as write_data writes it (init())
+  std::vector<PERIDEM_NS::DamageSectionColumn *> wd_columns;
+  std::vector<double> old_restart_m; // take_old_restart_m()
 
   void forget_partner(int i, tagint partner);
   void adopt_data_file_damage();

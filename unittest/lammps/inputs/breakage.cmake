@@ -115,9 +115,15 @@ _data_damage_case(data_file_damage_line_twice_warns
   ARGS -var spoil twice -var compare 0)
 _data_damage_case(error.data_file_damage_negative_wvolume
   CHECK ${PERIDEM_RUN}/expect_error.sh
-        "fix PERIDEM_BONDS: invalid weighted volume -2 of atom [0-9]+ in the data file"
+        "fix PERIDEM_LPS: invalid weighted volume -2 of atom [0-9]+ in the data file"
   ARGS -var lps 1 -var spoil wvolume)
 _data_damage_case(data_file_damage_misnamed_warns
   CHECK ${PERIDEM_RUN}/expect_pass.sh --regex
         "WARNING: fix PERIDEM_BONDS: per-atom property nbroken looks like the damage of a PeridemDamage section but is not read"
   ARGS -var props "d_nbroken d_zbroken" -var compare 0)
+# ... and the m column of the state-based grains (before, m silently summed again over the
+# bonds left, so the damaged nodes' dilation changed)
+_data_damage_case(data_file_lps_misnamed_warns
+  CHECK ${PERIDEM_RUN}/expect_pass.sh --regex
+        "WARNING: fix PERIDEM_LPS: per-atom property wvolume looks like the weighted volume m of a PeridemDamage section but is not read"
+  ARGS -var lps 1 -var props "d_peridem_nbroken d_peridem_zbroken d_wvolume" -var compare 0)

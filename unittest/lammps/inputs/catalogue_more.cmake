@@ -191,8 +191,17 @@ peridem_catalogue_error(fix_bonds_nbroken_alone "fix PERIDEM_BONDS: per-atom pro
   -var pre "fix p all property/atom d_peridem_nbroken")
 peridem_catalogue_error(fix_bonds_negative_count "fix PERIDEM_BONDS: invalid damage of atom 1 in the data file: broken count -1 and Z 0"
   -var pre "fix p all property/atom d_peridem_nbroken d_peridem_zbroken" -var pre2 "set atom 1 d_peridem_nbroken -1")
-peridem_catalogue_error(fix_bonds_wvolume_int "fix PERIDEM_BONDS: per-atom property peridem_wvolume must be a d_ vector"
-  -var pre "fix p all property/atom d_peridem_nbroken d_peridem_zbroken i_peridem_wvolume")
+
+# ---- fix peridem/lps: the weighted volume m of bond_style peridem/lps
+set(_lps_pre -var pre2 "bond_style peridem/lps" -var pre3 "bond_coeff * K 1e9 G 0.5e9 Gc 1000 horizon 2.0001e-3")
+peridem_catalogue_error(fix_lps_wvolume_int "fix PERIDEM_LPS: per-atom property peridem_wvolume must be a d_ vector"
+  -var pre "fix p all property/atom d_peridem_nbroken d_peridem_zbroken i_peridem_wvolume" ${_lps_pre})
+peridem_catalogue_error(fix_lps_not_lps "bond_style peridem/lps: fix PERIDEM_LPS is not a fix peridem/lps"
+  -var pre "fix PERIDEM_LPS all nve" ${_lps_pre})
+peridem_catalogue_error(fix_lps_args "Illegal fix peridem/lps command: it takes no arguments"
+  -var bad "fix l all peridem/lps extra")
+peridem_catalogue_error(fix_lps_user "fix peridem/lps is created by bond_style peridem/lps \\(as fix PERIDEM_LPS\\); do not define it yourself \\(fix mine\\)"
+  -var bad "fix mine all peridem/lps")
 
 # ---- fix peridem/wall
 peridem_catalogue_commands(wall_atomic "fix peridem/wall needs per-atom volumes and masses \\(atom_style peridem\\)"

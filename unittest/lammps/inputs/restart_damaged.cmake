@@ -10,7 +10,7 @@
 # stop with a message naming what is wrong: before, a bond type beyond the types read the
 # coefficient arrays out of bounds (a crash in BondPeridemLPS::stability_springs), x0 = 1e30
 # along a periodic axis hung in LAMMPS's minimum image, and NaN volumes or weighted volumes
-# ran on. The global sections too: the LPS shear modulus (12.96 MPa, M1) and the first
+# ran on (the Z of fix PERIDEM_BONDS's record, m of fix PERIDEM_LPS's). The global sections too: the LPS shear modulus (12.96 MPa, M1) and the first
 # setting after the LPS restart tag. LAMMPS's own restart reading (counts, bond partners, special lists) is trusted
 # input and not checked here (doc/errors.md).
 set(_damaged_cases
@@ -21,7 +21,8 @@ set(_damaged_cases
   "bond_type\;1000\;Invalid bond 1 \\(type 1000"
   "vfrac\;nan\;Invalid volume nan or mass"
   "x0z\;1e30\;more than one box length outside the periodic box along z"
-  "fixblock:4:3\;nan\;fix PERIDEM_BONDS: invalid damage state of atom 1"
+  "fixblock:3:2\;nan\;fix PERIDEM_BONDS: invalid damage state of atom 1"
+  "fixblock:2:1\;nan\;fix PERIDEM_LPS: invalid weighted volume nan of atom 1 in restart file"
   "fixblock:8:2\;inf\;fix PERIDEM_VHISTORY: invalid velocity history of atom 1")
 foreach(_case ${_damaged_cases})
   list(GET _case 0 _field)
