@@ -75,14 +75,18 @@ fetch() {
   tar -C "$root" -xf "$tarball"
 }
 
-configure_lammps() { # ON|OFF: PERIDEM in tree or not
+cmake_lammps() { # BUILD-DIR ON|OFF [cmake options]: configure LAMMPS, PERIDEM in tree or not
+  local dir=$1 peridem=$2
+  shift 2
+  cmake -S "$src/cmake" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DBUILD_MPI=ON -DBUILD_OMP=OFF \
+    -DWITH_JPEG=OFF -DWITH_PNG=OFF -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON -DPKG_PERI=ON \
+    -DPKG_PERIDEM="$peridem" "$@"
+}
+configure_lammps() { # ON|OFF: the shared LAMMPS of the routes
   # -O1: LAMMPS's own files compile about twice as fast as with -O3 on a busy 2-core
   # machine; PERIDEM's files get their own -O3 (out of tree) and the package's flags.
-  cmake -S "$src/cmake" -B "$build" -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_FLAGS_RELEASE="${PERIDEM_LAMMPS_OPT:--O1} -DNDEBUG" -DBUILD_SHARED_LIBS=ON \
-    -DBUILD_MPI=ON -DBUILD_OMP=OFF -DWITH_JPEG=OFF -DWITH_PNG=OFF \
-    -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON -DPKG_PERI=ON -DPKG_RIGID=ON -DPKG_PLUGIN=ON \
-    -DPKG_PERIDEM="$1"
+  cmake_lammps "$build" "$1" -DCMAKE_CXX_FLAGS_RELEASE="${PERIDEM_LAMMPS_OPT:--O1} -DNDEBUG" \
+    -DBUILD_SHARED_LIBS=ON -DPKG_RIGID=ON -DPKG_PLUGIN=ON
 }
 
 lammps() { # plain LAMMPS 2025 (the long part: about 600 files), built once
@@ -357,10 +361,8 @@ plugin-tests() { route_tests plugin; }
 # default build type; PERIDEM's files get the package's flags). Its own build folder; static.
 bpm() {
   sync_package
-  cmake -S "$src/cmake" -B "$root/build-bpm" -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DBUILD_SHARED_LIBS=OFF -DBUILD_MPI=ON \
-    -DBUILD_OMP=OFF -DWITH_JPEG=OFF -DWITH_PNG=OFF -DWITH_FFMPEG=OFF -DPKG_MOLECULE=ON \
-    -DPKG_PERI=ON -DPKG_BPM=ON -DPKG_PERIDEM=ON -DLAMMPS_MACHINE=bpm
+  cmake_lammps "$root/build-bpm" ON -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" \
+    -DBUILD_SHARED_LIBS=OFF -DPKG_BPM=ON -DLAMMPS_MACHINE=bpm
   nice -n 10 cmake --build "$root/build-bpm" -j "$jobs"
   local help
   help="$("$root/build-bpm/lmp_bpm" -h)"

@@ -19,3 +19,12 @@ foreach(_np 1 2)
             --out ${CMAKE_CURRENT_BINARY_DIR}/compression_reduced_np${_np} --np ${_np})
   set_tests_properties(compression_reduced_np${_np} PROPERTIES TIMEOUT 600)
 endforeach()
+
+# the Gmsh grains of Jha et al.'s code on the bed of the lattice grains: 123 and 91 nodes,
+# the same mass, R_c = 0.95 hmin; misspelt -var grains / -var new_bed stop the input
+add_test(NAME compression_gmsh_grains
+  COMMAND ${PERIDEM_RUN}/expect_pass.sh /usr/bin/python3
+          ${PROJECT_SOURCE_DIR}/examples/compression-502/check_grains.py
+          --lmp $<TARGET_FILE:lmp_peridem> --potentials ${PROJECT_SOURCE_DIR}/potentials
+          --out ${CMAKE_CURRENT_BINARY_DIR}/compression_gmsh_grains)
+set_tests_properties(compression_gmsh_grains PROPERTIES TIMEOUT 300)
