@@ -13,10 +13,15 @@
 # (the file spreads the nodes over the ranks otherwise). With m summed again over the bonds left
 # the damaged nodes' dilation changes and the bond style warns (--absent). The data file is
 # text and reads on any LAMMPS; the binary restart file only on the LAMMPS that wrote it.
+# LAMMPS 4 Feb 2025's write_data prints per-atom values with 16 significant digits (a node
+# volume of 0.010000000000000002 as 0.01, where 29 Sep 2021 prints 17): there the file this
+# build writes continues the run to round-off (measured: 6e-14 in the summed dilation).
 foreach(_np 1 2)
   set(_tol 0)
   if(_np EQUAL 2)
     set(_tol 1e-10)
+  elseif(NOT LAMMPS_VERSION EQUAL 20210929)
+    set(_tol 1e-12)
   endif()
   foreach(_kind data restart)
     set(_name lps_store.old_${_kind}_np${_np})
