@@ -9,9 +9,13 @@
 # ----------------------------------------------------------------------
 """Bulk damage and top-wall load against phi, the columns of RESULTS.md, for
 runs of in.authors_bed (its -var out file: step time top phi bulk_damage
-broken_bonds load ke) and of the authors' simulate2d (parse_output.py --csv).
+broken_bonds load ke; or any file whose '#' header names the columns phi,
+bulk_damage, broken_bonds, top_wall_load..., as ../shapes_reduced/*.txt) and of the authors' simulate2d (parse_output.py --csv).
 
-usage: compare_runs.py LABEL=FILE ... [--phi 0.5,0.55,...] [--first-break]
+usage: compare_runs.py LABEL=FILE[@SCALE] ... [--phi=0.5,0.55,...] [--first-break]
+
+@SCALE multiplies the run's phi by SCALE (e.g. envelope.py's envelope/node
+areas ratio, for phi_env).
 
 Each cell is 'bulk damage / load in kN/m' at the saved row whose phi is
 nearest to the column's phi (no interpolation; rows every 1000 steps = 0.05 mm
@@ -32,7 +36,11 @@ for arg in sys.argv[1:]:
         first_break = True
     else:
         label, path = arg.split('=', 1)
-        runs.append((label, path))
+        scale = 1.0
+        if '@' in path:
+            path, scale = path.rsplit('@', 1)
+            scale = float(scale)
+        runs.append((label, path, scale))
 
 
 def read_run(path):
@@ -41,7 +49,11 @@ def read_run(path):
         d = np.genfromtxt(path, delimiter=',', names=True)
         return d['phi'], d['bulk_damage'], d['broken_bond_frac'], d[d.dtype.names[7]]
     rows = {}
+    names = None
     for line in open(path):
+        if line.startswith('#') and names is None:
+            names = line[1:].split()
+            continue
         if line.startswith('#') or not line.strip():
             continue
         v = line.split()
@@ -49,14 +61,17 @@ def read_run(path):
     a = np.array([rows[k] for k in sorted(rows)])
     # our load is the force of the nodes on the wall (+ upward on the top wall's outward
     # normal: compressive load > 0); theirs (reaction, y) is the same sign convention
-    return a[:, 3], a[:, 4], a[:, 5], a[:, 6]
+    col = {n: k for k, n in enumerate(names)}
+    load_col = [k for k, n in enumerate(names) if n.startswith('top_wall_load')][0]
+    return a[:, col['phi']], a[:, col['bulk_damage']], a[:, col['broken_bonds']], a[:, load_col]
 
 
 hdr = '| run | ' + ' | '.join('%g' % p for p in phis) + ' |' + (' first broken bond at phi |' if first_break else '')
 print(hdr)
 print('|' + '---|' * (len(phis) + 1 + first_break))
-for label, path in runs:
+for label, path, scale in runs:
     phi, dmg, brk, load = read_run(path)
+    phi = phi * scale
     cells = []
     for p in phis:
         k = int(np.argmin(np.abs(phi - p)))

@@ -39,6 +39,9 @@ largest distance of a node from it (their polygons' circumradius: their
 nodes lie on the outline), angle = the direction of that node minus 45
 degrees (our square's corner in its own frame).  Squares (their 'n4') only:
 the script stops if a grain is not a square (corner distances differ).
+
+outline_lattice.py turns such a bed file into our lattice grains with nodes
+on the outline.
 """
 import argparse
 import numpy as np
