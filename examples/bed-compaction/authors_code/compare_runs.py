@@ -13,9 +13,14 @@ broken_bonds load ke; or any file whose '#' header names the columns phi,
 bulk_damage, broken_bonds, top_wall_load..., as ../shapes_reduced/*.txt) and of the authors' simulate2d (parse_output.py --csv).
 
 usage: compare_runs.py LABEL=FILE[@SCALE] ... [--phi=0.5,0.55,...] [--first-break]
+                       [--scaled] [--plot=OUT.png] [--ranges]
 
-@SCALE multiplies the run's phi by SCALE (e.g. envelope.py's envelope/node
-areas ratio, for phi_env).
+@SCALE: envelope.py's envelope/node areas ratio of the run's bed; with
+--scaled the table's phi is phi_env = phi x SCALE.  --plot draws bulk damage
+and top-wall load against phi and bulk damage against phi x SCALE (needs
+matplotlib; LABELs starting with 'theirs' dashed); LABELs that share the text before a '~' share a colour (one
+legend entry: perturbed repeats of one run); with --ranges such runs make one
+table row whose cells give the smallest and largest value of the group.
 
 Each cell is 'bulk damage / load in kN/m' at the saved row whose phi is
 nearest to the column's phi (no interpolation; rows every 1000 steps = 0.05 mm
@@ -29,8 +34,17 @@ import numpy as np
 phis = [0.50, 0.55, 0.60, 0.62, 0.65, 0.70, 0.76, 0.85, 0.90, 0.95, 0.974]
 runs = []
 first_break = False
+scaled = False
+plot = None
+ranges = False
 for arg in sys.argv[1:]:
-    if arg.startswith('--phi='):
+    if arg == '--ranges':
+        ranges = True
+    elif arg == '--scaled':
+        scaled = True
+    elif arg.startswith('--plot='):
+        plot = arg[7:]
+    elif arg.startswith('--phi='):
         phis = [float(x) for x in arg[6:].split(',')]
     elif arg == '--first-break':
         first_break = True
@@ -69,18 +83,67 @@ def read_run(path):
 hdr = '| run | ' + ' | '.join('%g' % p for p in phis) + ' |' + (' first broken bond at phi |' if first_break else '')
 print(hdr)
 print('|' + '---|' * (len(phis) + 1 + first_break))
+curves = []
+rows = {}          # base label -> list of (cells, first break); cell = (damage, load) or None
+order = []
 for label, path, scale in runs:
     phi, dmg, brk, load = read_run(path)
-    phi = phi * scale
+    curves.append((label, phi, dmg, load, scale))
+    if scaled:
+        phi = phi * scale
     cells = []
     for p in phis:
         k = int(np.argmin(np.abs(phi - p)))
-        if abs(phi[k] - p) > 0.01:
-            cells.append('-')
-            continue
-        cells.append('%.3f / %.1f' % (dmg[k], load[k] / 1e3))
-    line = '| %s | %s |' % (label, ' | '.join(cells))
+        cells.append(None if abs(phi[k] - p) > 0.01 else (dmg[k], load[k] / 1e3))
+    k = np.nonzero(brk > 0)[0]
+    fb = phi[k[0]] if len(k) else None
+    base = label.split('~')[0] if ranges else label
+    if base not in rows:
+        rows[base] = []
+        order.append(base)
+    rows[base].append((cells, fb))
+
+
+def span(values, fmt):
+    lo, hi = min(values), max(values)
+    return fmt % lo if fmt % lo == fmt % hi else (fmt + '-' + fmt) % (lo, hi)
+
+
+for base in order:
+    group = rows[base]
+    out = []
+    for c in range(len(phis)):
+        vals = [g[0][c] for g in group if g[0][c] is not None]
+        out.append('-' if len(vals) < len(group) else
+                   '%s / %s' % (span([v[0] for v in vals], '%.3f'), span([v[1] for v in vals], '%.1f')))
+    line = '| %s | %s |' % (base + (' (%d runs)' % len(group) if len(group) > 1 else ''), ' | '.join(out))
     if first_break:
-        k = np.nonzero(brk > 0)[0]
-        line += ' %s |' % ('%.3f' % phi[k[0]] if len(k) else '-')
+        fbs = [g[1] for g in group if g[1] is not None]
+        line += ' %s |' % (span(fbs, '%.3f') if len(fbs) == len(group) else '-')
     print(line)
+
+if plot:
+    import matplotlib
+    matplotlib.use('Agg')
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
+    colours = {}
+    for label, phi, dmg, load, scale in curves:
+        base = label.split('~')[0]
+        first = base not in colours
+        if first:
+            colours[base] = 'C%d' % (len(colours) % 10)
+        kw = dict(color=colours[base], lw=2.0 if base.startswith('theirs') else 1.0,
+                  ls='--' if base.startswith('theirs') else '-', label=base if first else None)
+        ax[0].plot(phi, dmg, **kw)
+        ax[1].plot(phi, load / 1e3, **kw)
+        ax[2].plot(phi * scale, dmg, **kw)
+    ax[0].set_xlabel('phi = node areas / container'); ax[0].set_ylabel('bulk damage')
+    ax[1].set_xlabel('phi = node areas / container'); ax[1].set_ylabel('top wall load (kN/m)')
+    ax[2].set_xlabel('phi_env = contact envelopes / container'); ax[2].set_ylabel('bulk damage')
+    for a in ax:
+        a.grid(alpha=.3)
+    ax[0].set_xlim(0.45, 1.0); ax[1].set_xlim(0.45, 1.0)
+    ax[0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(plot, dpi=100)

@@ -11,6 +11,9 @@
 # on a setup made by make_setup.py, with their base.conf constants
 # (scripts/2d_bulk_diffmesh_nogravity/base.conf + run.sh's 'frac' lines).
 # usage: run_case.sh SIMULATE2D SETUP.h5 RUNDIR DT TIMESTEPS MODULO
+# EXTRA_CONF (environment, optional): lines appended to main.conf; their reader
+# (src/read/read_config.h) takes the last value of a key, so e.g.
+# EXTRA_CONF='allow_friction = 0' switches friction off.
 # simulate2d reads config/main.conf and data/hdf5/all.h5 and writes
 # output/hdf5/ relative to the current directory, so each run gets its own.
 set -e
@@ -33,6 +36,7 @@ friction_coefficient = 0.9
 speed_wall_top = -1
 enable_fracture = 1
 self_contact = 1
+${EXTRA_CONF:-}
 CONF
 cd "$dir"
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2}
