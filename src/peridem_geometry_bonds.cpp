@@ -94,6 +94,27 @@ std::vector<Bond> pairs_within_horizon(const std::vector<Vec2> &x, double eps)
   return pairs_within_horizon(c, 2, eps);
 }
 
+double smallest_pair_distance(const std::vector<double> &coords, int dim, double r0)
+{
+  const std::size_t n = coords.size() / static_cast<std::size_t>(dim);
+  if (n < 2) return std::numeric_limits<double>::infinity();
+  if (!(r0 > 0.0) || !std::isfinite(r0)) throw GeometryError("search radius must be positive");
+  for (double r = r0;; r *= 2.0) {
+    const std::vector<Bond> pairs = pairs_within_horizon(coords, dim, r);
+    if (pairs.empty()) continue;
+    double best2 = std::numeric_limits<double>::infinity();
+    for (const Bond &b : pairs) {
+      double d2 = 0.0;
+      for (int d = 0; d < dim; ++d) {
+        const double dx = coords[b.second * dim + d] - coords[b.first * dim + d];
+        d2 += dx * dx;
+      }
+      best2 = std::min(best2, d2);
+    }
+    return std::sqrt(best2);
+  }
+}
+
 std::vector<Bond> create_bonds(const Polygon &D, const std::vector<Vec2> &x, double eps,
                                Pruning pruning)
 {

@@ -39,6 +39,11 @@ inline bool within_horizon(double dist2, double eps)
 std::vector<Bond> pairs_within_horizon(const std::vector<double> &coords, int dim, double eps);
 std::vector<Bond> pairs_within_horizon(const std::vector<Vec2> &x, double eps);
 
+// Smallest distance between two of the n points of `coords` (as above), infinity
+// for fewer than two. Searches pairs within r0 first (e.g. the node spacing) and
+// doubles the radius until a pair is found.
+double smallest_pair_distance(const std::vector<double> &coords, int dim, double r0);
+
 enum class Pruning {
   None,             // keep every pair within the horizon (convex grains)
   ExtendedBoundary, // Bhattacharya & Lipton 2023, §5 (extended boundary + cusp bisectors)

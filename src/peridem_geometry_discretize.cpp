@@ -14,10 +14,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 namespace peridem {
 
 namespace {
+
+// A cell of size h whose centre is farther than cell_reach * h (> h / sqrt(2))
+// from the boundary lies entirely inside or outside D.
+constexpr double cell_reach = 0.7072;
 
 // Keeps the part of ring r on the side of an axis-aligned line where
 // sign * (coord - c) >= 0 (one Sutherland-Hodgman stage). The cut point gets
@@ -42,9 +48,9 @@ Ring clip_axis(const Ring &r, bool use_x, double c, double sign)
   return out;
 }
 
-// Moves a point that is within round-off outside D onto the boundary and, if
-// needed, a few ulps inward, so that D.contains_exact() holds. Returns false if
-// that fails (the point is then dropped).
+// Moves p to the nearest point of the boundary (any ring) and, where round-off
+// puts that point outside, a few ulps inward, so that D.contains_exact() holds.
+// Returns false if that fails.
 bool snap_inside(const Polygon &D, Vec2 &p)
 {
   double best = std::numeric_limits<double>::infinity();
@@ -74,7 +80,166 @@ bool snap_inside(const Polygon &D, Vec2 &p)
   return false;
 }
 
+// The lattice cells to visit: the bounding box of D and one extra cell of
+// margin, so that ExactClip and Outline see every cell touching D.
+struct CellRange {
+  long i0, i1, j0, j1;
+};
+
+CellRange lattice_cells(const Polygon &D, double h, const Vec2 &offset)
+{
+  if (!(h > 0.0) || !std::isfinite(h)) throw GeometryError("lattice spacing must be positive");
+  const BoundingBox bb = D.bounding_box();
+  CellRange r;
+  r.i0 = static_cast<long>(std::floor((bb.lo.x - offset.x) / h)) - 1;
+  r.i1 = static_cast<long>(std::ceil((bb.hi.x - offset.x) / h)) + 1;
+  r.j0 = static_cast<long>(std::floor((bb.lo.y - offset.y) / h)) - 1;
+  r.j1 = static_cast<long>(std::ceil((bb.hi.y - offset.y) / h)) + 1;
+  if ((r.i1 - r.i0) * (r.j1 - r.j0) > 100000000L)
+    throw GeometryError("lattice spacing too small for the grain size (more than 1e8 cells)");
+  return r;
+}
+
+bool box_meets_boundary(const Polygon &D, const Vec2 &lo, const Vec2 &hi)
+{
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
+    const Ring &r = D.ring(k);
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (segment_meets_box(r[i], r[(i + 1) % r.size()], lo, hi)) return true;
+  }
+  return false;
+}
+
+struct OutlineNode {
+  Vec2 x;
+  double volume;
+  std::size_t cell; // row-major cell index: the output order
+};
+
+// Nodes closer than d to a point, found in a grid of cells of size d.
+class NearGrid {
+ public:
+  explicit NearGrid(double d) : d_(d) {}
+  void insert(const Vec2 &p, std::size_t index) { cells_[key(p, 0, 0)].push_back(index); }
+  // index of the node nearest to p among those closer than d, or npos
+  std::size_t nearest(const Vec2 &p, const std::vector<OutlineNode> &nodes) const
+  {
+    std::size_t best = npos;
+    double best2 = d_ * d_;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) {
+        const auto it = cells_.find(key(p, di, dj));
+        if (it == cells_.end()) continue;
+        for (std::size_t n : it->second) {
+          const double d2 = (nodes[n].x - p).norm2();
+          if (d2 < best2 || (d2 == best2 && best != npos && n < best)) best2 = d2, best = n;
+        }
+      }
+    return best;
+  }
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+
+ private:
+  double d_;
+  std::map<std::pair<long, long>, std::vector<std::size_t>> cells_;
+  std::pair<long, long> key(const Vec2 &p, int di, int dj) const
+  {
+    return {static_cast<long>(std::floor(p.x / d_)) + di,
+            static_cast<long>(std::floor(p.y / d_)) + dj};
+  }
+};
+
+std::size_t nearest_node(const std::vector<OutlineNode> &nodes, const Vec2 &p)
+{
+  std::size_t best = NearGrid::npos;
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    if (best == NearGrid::npos || (nodes[n].x - p).norm2() < (nodes[best].x - p).norm2()) best = n;
+  return best;
+}
+
+// NodePlacement::Outline (see the header): cells of positive area, those the
+// boundary meets with their node moved onto it, then merged below the distance
+// outline_merge_fraction * h.
+Nodes2D outline_nodes(const Polygon &D, double h, const Vec2 &offset, const CellRange &r)
+{
+  const double half = 0.5 * h, reach = cell_reach * h;
+  // a cell with less than this fraction of its area in D (or round-off there) gets
+  // no node of its own: its area goes to the nearest node
+  const double sliver = 1e-12;
+  std::vector<OutlineNode> kept, moved, slivers;
+  std::size_t cell = 0;
+  for (long j = r.j0; j <= r.j1; ++j) {
+    for (long i = r.i0; i <= r.i1; ++i, ++cell) {
+      const Vec2 c = offset + Vec2(i * h, j * h);
+      if (D.boundary_distance(c) > reach) { // cell fully inside or outside
+        if (D.locate(c) == 1) kept.push_back({c, h * h, cell});
+        continue;
+      }
+      const Vec2 lo = c - Vec2(half, half), hi = c + Vec2(half, half);
+      const double area = clipped_box_area(D, lo, hi);
+      if (!box_meets_boundary(D, lo, hi)) {
+        // inside or outside as its centre (a cell in a hole has area 0 up to round-off)
+        if (D.locate(c) == 1) kept.push_back({c, area, cell});
+      } else if (area > sliver * h * h) {
+        moved.push_back({c, area, cell});
+      } else if (area > 0.0) {
+        slivers.push_back({c, area, cell});
+      }
+    }
+  }
+  // Interior nodes are h apart and, their cells being inside D, at least h/2
+  // from every moved node; the largest moved cells claim their place first.
+  const double d = outline_merge_fraction * h;
+  NearGrid grid(d);
+  for (std::size_t n = 0; n < kept.size(); ++n) grid.insert(kept[n].x, n);
+  std::stable_sort(moved.begin(), moved.end(),
+                   [](const OutlineNode &a, const OutlineNode &b) { return a.volume > b.volume; });
+  for (OutlineNode m : moved) {
+    // a point that cannot be put inside D gives its area to the nearest node
+    const std::size_t into =
+        snap_inside(D, m.x) ? grid.nearest(m.x, kept) : nearest_node(kept, m.x);
+    if (into != NearGrid::npos) {
+      kept[into].volume += m.volume;
+    } else {
+      grid.insert(m.x, kept.size());
+      kept.push_back(m);
+    }
+  }
+  for (const OutlineNode &m : slivers) {
+    const std::size_t into = nearest_node(kept, m.x);
+    if (into != NearGrid::npos) kept[into].volume += m.volume;
+  }
+  std::sort(kept.begin(), kept.end(),
+            [](const OutlineNode &a, const OutlineNode &b) { return a.cell < b.cell; });
+  Nodes2D nodes;
+  for (const OutlineNode &n : kept) {
+    nodes.x.push_back(n.x);
+    nodes.volume.push_back(n.volume);
+  }
+  return nodes;
+}
+
 } // namespace
+
+bool segment_meets_box(const Vec2 &a, const Vec2 &b, const Vec2 &lo, const Vec2 &hi)
+{
+  // clip the parameter range [0, 1] of a + t (b - a) to each slab of the box
+  double t0 = 0.0, t1 = 1.0;
+  const double p[2] = {a.x, a.y}, e[2] = {b.x - a.x, b.y - a.y};
+  const double l[2] = {lo.x, lo.y}, u[2] = {hi.x, hi.y};
+  for (int k = 0; k < 2; ++k) {
+    if (e[k] == 0.0) {
+      if (p[k] < l[k] || p[k] > u[k]) return false;
+      continue;
+    }
+    double ta = (l[k] - p[k]) / e[k], tb = (u[k] - p[k]) / e[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
 
 double clipped_box_area(const Polygon &D, const Vec2 &lo, const Vec2 &hi)
 {
@@ -92,19 +257,17 @@ double clipped_box_area(const Polygon &D, const Vec2 &lo, const Vec2 &hi)
 
 Nodes2D lattice_nodes(const Polygon &D, double h, const LatticeOptions &opt)
 {
-  if (!(h > 0.0) || !std::isfinite(h)) throw GeometryError("lattice spacing must be positive");
-  const BoundingBox bb = D.bounding_box();
-  // One extra cell of margin so that ExactClip sees every cell touching D.
-  const long i0 = static_cast<long>(std::floor((bb.lo.x - opt.offset.x) / h)) - 1;
-  const long i1 = static_cast<long>(std::ceil((bb.hi.x - opt.offset.x) / h)) + 1;
-  const long j0 = static_cast<long>(std::floor((bb.lo.y - opt.offset.y) / h)) - 1;
-  const long j1 = static_cast<long>(std::ceil((bb.hi.y - opt.offset.y) / h)) + 1;
-  if ((i1 - i0) * (j1 - j0) > 100000000L)
-    throw GeometryError("lattice spacing too small for the grain size (more than 1e8 cells)");
+  const CellRange range = lattice_cells(D, h, opt.offset);
+  const long i0 = range.i0, i1 = range.i1, j0 = range.j0, j1 = range.j1;
+  if (opt.placement == NodePlacement::Outline) {
+    if (opt.volume != NodalVolume::ExactClip)
+      throw GeometryError("nodes on the outline need the exact clipped cell volumes");
+    return outline_nodes(D, h, opt.offset, range);
+  }
 
   const double tol = 1e-9 * h;
   const bool exact = opt.volume == NodalVolume::ExactClip;
-  const double half = 0.5 * h, reach = 0.7072 * h; // > h / sqrt(2)
+  const double half = 0.5 * h, reach = cell_reach * h;
   Nodes2D nodes;
   std::vector<std::pair<Vec2, double>> orphans; // cells without a node
   for (long j = j0; j <= j1; ++j) {

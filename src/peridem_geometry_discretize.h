@@ -12,6 +12,8 @@
 // (a) Regular square lattice clipped to the shape (Bhattacharya & Lipton 2023, §6-7 use
 //     uniform mesh size h); the nodal volume is the cell area h^2 or,
 //     optionally, the exact area of the lattice cell clipped to the shape.
+//     Optionally the nodes of the cells that the boundary crosses are moved
+//     onto the boundary, as a mesher puts its boundary nodes (Jha et al. 2021).
 // (b) Gmsh meshes (Jha et al. 2021, §3.1): nodes at the mesh vertices, nodal
 //     volume V_i = sum over elements T_e containing i of int_{T_e} phi_i dx
 //     (eq. 31) with the P1 (triangle) / Q1 (quad) interpolation functions.
@@ -39,11 +41,23 @@ enum class NodalVolume {
   ExactClip, // V = |cell cap D|; sums to |D| to round-off
 };
 
+enum class NodePlacement {
+  Lattice, // the lattice points inside D (default)
+  Outline, // the node of every cell that the boundary crosses moved onto the boundary
+};
+
 struct LatticeOptions {
   // Lattice points are offset + (i h, j h) for integers i, j.
   Vec2 offset{0.0, 0.0};
   NodalVolume volume = NodalVolume::CellArea;
+  NodePlacement placement = NodePlacement::Lattice;
 };
+
+// Distance below which Outline merges two nodes, in units of h: a node moved onto
+// the boundary closer than this to a kept node gives it its volume. Interior
+// nodes are h apart and at least h/2 from the boundary, so every pair of nodes of
+// an Outline grain is at least outline_merge_fraction * h apart.
+constexpr double outline_merge_fraction = 0.5;
 
 // Square lattice of spacing h clipped to D. A lattice point is kept if it is
 // inside the closed shape up to 1e-9 h (so points meant to lie on the boundary
@@ -51,7 +65,20 @@ struct LatticeOptions {
 // the boundary by a few ulps, so every node satisfies D.contains_exact().
 // With ExactClip, the area of a cell whose centre is outside D is given to the
 // nearest node, so the volumes sum to |D|.
+//
+// With Outline (requires ExactClip, else GeometryError) every cell with area in
+// D gives one node with that area as its volume: a cell the boundary of any
+// ring meets (closed cell) moves its node to the nearest boundary point (a few
+// ulps inward where round-off puts it outside); the other cells keep their
+// lattice point. A cell with less than 1e-12 of its area in D gives it to the
+// nearest node. Moved nodes are then taken in order of decreasing volume: one
+// closer than outline_merge_fraction * h to a node already kept is merged into
+// it (volume added), e.g. two cells at a convex corner or across an arm thinner
+// than h/2. Nodes keep the lattice's row-major order.
 Nodes2D lattice_nodes(const Polygon &D, double h, const LatticeOptions &opt = {});
+
+// True if the closed segment [a, b] meets the closed box [lo, hi] (Liang-Barsky).
+bool segment_meets_box(const Vec2 &a, const Vec2 &b, const Vec2 &lo, const Vec2 &hi);
 
 // Exact area of the axis-aligned box [lo, hi] intersected with D
 // (Sutherland-Hodgman clipping of every ring against the box; hole rings are

@@ -8,17 +8,25 @@
 ------------------------------------------------------------------------- */
 
 // Discretization: lattice nodes and volumes (h^2 or exactly clipped cells),
-// Gmsh import with P1/Q1 nodal volumes (Jha et al. 2021, §3.1 eq. 31).
+// Gmsh import with P1/Q1 nodal volumes (Jha et al. 2021, §3.1 eq. 31), and
+// lattice grains with the nodes of boundary cells moved onto the outline
+// (NodePlacement::Outline): positions on the boundary, exact volumes, the
+// merge distance, bond pruning with both ends on the boundary.
+#include "peridem_geometry_bonds.h"
 #include "peridem_geometry_discretize.h"
+#include "peridem_geometry_grain.h"
 #include "peridem_geometry_shapes.h"
+#include "peridem_geometry_visibility.h"
 
 #include "geometry_test_helpers.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numeric>
+#include <set>
 
 using namespace peridem;
 
@@ -38,6 +46,41 @@ std::string writeTemp(const std::string &name, const std::string &text)
   std::ofstream(path) << text;
   return path;
 }
+// the built-in shapes, a star and a plate with holes
+std::vector<Polygon> test_shapes()
+{
+  std::vector<Polygon> shapes;
+  for (const auto &name : builtin_shape_names()) shapes.push_back(make_shape(name));
+  for (const char *file : {"star.poly", "plate_with_holes.poly"})
+    shapes.push_back(
+        read_polygon_file(std::string(PERIDEM_SOURCE_DIR) + "/potentials/shapes/" + file));
+  return shapes;
+}
+
+LatticeOptions outline(Vec2 offset = {0.0, 0.0})
+{
+  LatticeOptions o;
+  o.offset = offset;
+  o.volume = NodalVolume::ExactClip;
+  o.placement = NodePlacement::Outline;
+  return o;
+}
+
+double smallest_distance(const Nodes2D &n)
+{
+  std::vector<double> c;
+  for (const Vec2 &p : n.x) c.insert(c.end(), {p.x, p.y});
+  return smallest_pair_distance(c, 2, 1e-3);
+}
+
+double ring_distance(const Ring &r, const Vec2 &p)
+{
+  double d = INFINITY;
+  for (std::size_t i = 0; i < r.size(); ++i)
+    d = std::min(d, point_segment_distance(p, r[i], r[(i + 1) % r.size()]));
+  return d;
+}
+
 } // namespace
 
 TEST(GeometryDiscretize, SquareLatticeCounts)
@@ -61,12 +104,7 @@ TEST(GeometryDiscretize, SquareLatticeCounts)
 
 TEST(GeometryDiscretize, ExactClippedVolumesSumToArea)
 {
-  std::vector<Polygon> shapes;
-  for (const auto &name : builtin_shape_names()) shapes.push_back(make_shape(name));
-  shapes.push_back(
-      read_polygon_file(std::string(PERIDEM_SOURCE_DIR) + "/potentials/shapes/star.poly"));
-  shapes.push_back(read_polygon_file(std::string(PERIDEM_SOURCE_DIR) +
-                                     "/potentials/shapes/plate_with_holes.poly"));
+  std::vector<Polygon> shapes = test_shapes();
   for (std::size_t s = 0; s < shapes.size(); ++s) {
     for (double h : {0.2, 0.05, 0.0123}) {
       LatticeOptions o;
@@ -168,4 +206,213 @@ TEST(GeometryDiscretize, GmshHandWrittenAndErrors)
   EXPECT_NE(e.find("no triangle"), std::string::npos) << e;
   e = errorOf(writeTemp("trunc.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n"));
   EXPECT_NE(e.find("unexpected end of file"), std::string::npos) << e;
+}
+
+TEST(GeometryOutline, AlignedSquareKeepsLatticeNodesWithOuterOnesOnTheEdges)
+{
+  // side 2m h: the outermost lattice rows lie on the edges (up to round-off of
+  // m h), so outline keeps the node count and puts them exactly on the edges
+  for (const double side : {2.0, 1.41421}) {
+    const int m = 7;
+    const double h = side / (2 * m), half = 0.5 * side;
+    const Polygon sq = make_shape("square", {{"side", side}});
+    const double edge = sq.outer()[0].x > 0 ? sq.outer()[0].x : -sq.outer()[0].x;
+    ASSERT_EQ(edge, half);
+    LatticeOptions exact;
+    exact.volume = NodalVolume::ExactClip;
+    const Nodes2D lat = lattice_nodes(sq, h, exact), out = lattice_nodes(sq, h, outline());
+    ASSERT_EQ(out.size(), lat.size());
+    EXPECT_EQ(out.size(), static_cast<std::size_t>((2 * m + 1) * (2 * m + 1)));
+    int on_edge = 0;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const Vec2 p = out.x[k];
+      EXPECT_NEAR((p - lat.x[k]).norm(), 0.0, 1e-12 * side);
+      if (std::fabs(lat.x[k].x) > half - 0.25 * h || std::fabs(lat.x[k].y) > half - 0.25 * h) {
+        EXPECT_TRUE(std::fabs(p.x) == half || std::fabs(p.y) == half) << p.x << " " << p.y;
+        on_edge++;
+      }
+    }
+    EXPECT_EQ(on_edge, 8 * m);
+    EXPECT_NEAR(sum(out.volume), sq.area(), 1e-12 * sq.area());
+    EXPECT_NEAR(smallest_distance(out), h, 1e-12 * h);
+  }
+}
+
+TEST(GeometryOutline, DiskOuterNodesOnTheOutline)
+{
+  // the disk is a 64-gon: its boundary points lie between R cos(pi/64) and R
+  const double R = 1.0, h = 0.1;
+  const Polygon disk = make_shape("disk", {{"radius", R}});
+  const Nodes2D n = lattice_nodes(disk, h, outline({0.031, -0.017}));
+  std::vector<double> angles;
+  for (const Vec2 &p : n.x) {
+    const double d = disk.boundary_distance(p);
+    // a node is on the outline or the lattice point of a cell inside the disk
+    EXPECT_TRUE(d <= 1e-12 * R || d >= 0.5 * h) << d;
+    if (d > 1e-12 * R) continue;
+    EXPECT_LE(p.norm(), R * (1 + 1e-12));
+    EXPECT_GE(p.norm(), R * std::cos(M_PI / 64) * (1 - 1e-12));
+    angles.push_back(std::atan2(p.y, p.x));
+  }
+  // the outline nodes go all round, about h apart (no gap above 1.5 h)
+  ASSERT_GT(angles.size(), 50u);
+  std::sort(angles.begin(), angles.end());
+  angles.push_back(angles.front() + 2 * M_PI);
+  for (std::size_t k = 1; k < angles.size(); ++k)
+    EXPECT_LT(R * (angles[k] - angles[k - 1]), 1.5 * h);
+  EXPECT_NEAR(sum(n.volume), disk.area(), 1e-12 * disk.area());
+}
+
+TEST(GeometryOutline, RingNodesOnBothCircles)
+{
+  const double R = 1.0, r = 0.6, h = 0.07;
+  const Polygon ring = make_shape("ring", {{"radius", R}, {"inner_radius", r}});
+  const Nodes2D n = lattice_nodes(ring, h, outline({0.011, 0.023}));
+  int inner = 0, outer = 0;
+  for (const Vec2 &p : n.x) {
+    if (ring_distance(ring.ring(1), p) <= 1e-12 * R) {
+      inner++;
+      EXPECT_LE(p.norm(), r * (1 + 1e-12));
+      EXPECT_GE(p.norm(), r * std::cos(M_PI / 64) * (1 - 1e-12));
+    } else if (ring_distance(ring.ring(0), p) <= 1e-12 * R) {
+      outer++;
+    } else {
+      EXPECT_GE(ring.boundary_distance(p), 0.5 * h);
+    }
+  }
+  // about one node per h of each circle
+  EXPECT_GT(inner, 0.8 * 2 * M_PI * r / h);
+  EXPECT_GT(outer, 0.8 * 2 * M_PI * R / h);
+  EXPECT_NEAR(sum(n.volume), ring.area(), 1e-12 * ring.area());
+}
+
+TEST(GeometryOutline, VolumesSumToAreaAndNodesAreApart)
+{
+  std::vector<Polygon> shapes = test_shapes();
+  // arms thinner than h and than h/2: their nodes merge across the arm
+  shapes.push_back(make_plus(1.0, 0.07));
+  shapes.push_back(make_plus(1.0, 0.03));
+  for (std::size_t s = 0; s < shapes.size(); ++s) {
+    for (double h : {0.2, 0.1, 0.0123}) {
+      Polygon D = shapes[s];
+      D.rotate(0.1 * s);
+      const Nodes2D n = lattice_nodes(D, h, outline({0.013 * s, -0.007}));
+      ASSERT_GE(n.size(), 2u);
+      const double area = D.area();
+      EXPECT_NEAR(sum(n.volume), area, 1e-12 * area) << "shape " << s << " h " << h;
+      EXPECT_GE(smallest_distance(n), outline_merge_fraction * h) << "shape " << s << " h " << h;
+      for (std::size_t k = 0; k < n.size(); ++k) {
+        EXPECT_TRUE(D.contains_exact(n.x[k])) << "shape " << s << " h " << h << " node " << k;
+        EXPECT_GT(n.volume[k], 0.0);
+      }
+    }
+  }
+}
+
+TEST(GeometryOutline, ConvexCornerCellsMerge)
+{
+  // a square turned by 30 degrees: cells near a corner project onto the same
+  // vertex or close to it, and are merged
+  Polygon sq = make_shape("square", {{"side", 1.0}});
+  sq.rotate(M_PI / 6);
+  const double h = 0.1;
+  const Nodes2D n = lattice_nodes(sq, h, outline({0.004, 0.009}));
+  for (const Vec2 &v : sq.outer()) {
+    int near = 0;
+    for (const Vec2 &p : n.x) near += (p - v).norm() < 0.5 * h;
+    EXPECT_LE(near, 1);
+  }
+  EXPECT_GE(smallest_distance(n), 0.5 * h);
+}
+
+TEST(GeometryOutline, PruningWithBothEndsOnTheBoundary)
+{
+  // plus of arm width 0.4: the top edge of the right arm is y = 0.2 (x > 0.2), the
+  // right edge of the top arm x = 0.2 (y > 0.2); the notch between them is outside
+  const double w = 0.2, h = 0.05, eps = 0.15;
+  const Polygon plus = make_plus(1.0, 2 * w);
+  for (const Pruning pruning : {Pruning::ExtendedBoundary, Pruning::Exact}) {
+    GrainOptions opt;
+    opt.lattice = outline({0.013, 0.021});
+    opt.pruning = pruning;
+    const Grain2D g = discretize_grain(plus, h, eps, opt);
+    const std::set<Bond> bonds(g.bonds.begin(), g.bonds.end());
+    std::vector<int> arm_top, arm_side;
+    for (std::size_t k = 0; k < g.nodes.size(); ++k) {
+      const Vec2 p = g.nodes.x[k];
+      if (std::fabs(p.y - w) <= 1e-12 && p.x > w + 1e-9) arm_top.push_back(static_cast<int>(k));
+      if (std::fabs(p.x - w) <= 1e-12 && p.y > w + 1e-9) arm_side.push_back(static_cast<int>(k));
+    }
+    ASSERT_GT(arm_top.size(), 5u);
+    ASSERT_GT(arm_side.size(), 5u);
+    int along = 0, across = 0;
+    for (int a : arm_top) {
+      for (int b : arm_top) {
+        const Vec2 d = g.nodes.x[a] - g.nodes.x[b];
+        if (a < b && within_horizon(d.norm2(), eps)) {
+          EXPECT_TRUE(bonds.count({a, b})) << "bond along the edge pruned";
+          along++;
+        }
+      }
+      for (int b : arm_side) {
+        const Vec2 d = g.nodes.x[a] - g.nodes.x[b];
+        if (!within_horizon(d.norm2(), eps)) continue;
+        EXPECT_FALSE(segment_inside_exact(plus, g.nodes.x[a], g.nodes.x[b]));
+        EXPECT_FALSE(bonds.count({std::min(a, b), std::max(a, b)})) << "bond across the notch";
+        across++;
+      }
+    }
+    EXPECT_GT(along, 10);
+    EXPECT_GT(across, 3);
+    // no bond leaves the shape
+    for (const Bond &b : g.bonds)
+      EXPECT_TRUE(segment_inside_exact(plus, g.nodes.x[b.first], g.nodes.x[b.second]));
+  }
+}
+
+TEST(GeometryOutline, LatticePlacementIsTheDefault)
+{
+  for (const auto &name : builtin_shape_names()) {
+    for (const NodalVolume v : {NodalVolume::CellArea, NodalVolume::ExactClip}) {
+      LatticeOptions def, lat;
+      def.volume = lat.volume = v;
+      def.offset = lat.offset = {0.017, -0.004};
+      lat.placement = NodePlacement::Lattice;
+      const Polygon D = make_shape(name);
+      const Nodes2D a = lattice_nodes(D, 0.09, def), b = lattice_nodes(D, 0.09, lat);
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a.x[k], b.x[k]);
+        EXPECT_EQ(a.volume[k], b.volume[k]);
+      }
+    }
+  }
+}
+
+TEST(GeometryOutline, NeedsExactVolumes)
+{
+  LatticeOptions o = outline();
+  o.volume = NodalVolume::CellArea;
+  EXPECT_EQ(geometryErrorOf([&] { lattice_nodes(make_shape("disk"), 0.1, o); }),
+            "nodes on the outline need the exact clipped cell volumes");
+}
+
+TEST(GeometryOutline, SegmentMeetsBox)
+{
+  const Vec2 lo(0, 0), hi(1, 1);
+  EXPECT_TRUE(segment_meets_box({-1, 0.5}, {2, 0.5}, lo, hi));    // through
+  EXPECT_TRUE(segment_meets_box({0.2, 0.2}, {0.3, 0.4}, lo, hi)); // inside
+  EXPECT_TRUE(segment_meets_box({1, -1}, {1, 2}, lo, hi));        // along an edge
+  EXPECT_TRUE(segment_meets_box({0, 2}, {2, 0}, lo, hi));         // touches a corner
+  EXPECT_FALSE(segment_meets_box({0, 2.1}, {2.1, 0}, lo, hi));
+  EXPECT_FALSE(segment_meets_box({1.5, -1}, {1.5, 2}, lo, hi));
+  EXPECT_FALSE(segment_meets_box({-1, 0.5}, {-0.1, 0.5}, lo, hi));
+}
+
+TEST(GeometryOutline, SmallestPairDistance)
+{
+  EXPECT_TRUE(std::isinf(smallest_pair_distance({1.0, 2.0}, 2, 0.1)));
+  // found beyond the first search radius: 0.1 -> 0.2 -> ... -> 3.2
+  EXPECT_DOUBLE_EQ(smallest_pair_distance({0, 0, 3, 0, 3, 4, -4, 7}, 2, 0.1), 3.0);
+  EXPECT_DOUBLE_EQ(smallest_pair_distance({0, 0, 0, 1, 1, 1, 0, 0, 0.5}, 3, 1.0), 0.5);
 }
