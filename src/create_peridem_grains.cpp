@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <random>
 #include <sstream>
@@ -249,6 +250,8 @@ struct CreatePeridemGrains::Options {
   long long rotate_seed = 0; // > 0: random rotation
   int bond_type = 1;
   peridem::NodalVolume volume = peridem::NodalVolume::CellArea;
+  bool volume_given = false;
+  peridem::NodePlacement nodes = peridem::NodePlacement::Lattice;
   peridem::Pruning pruning = peridem::Pruning::ExtendedBoundary;
   std::vector<peridem::CutSegment> notches;
   bool is_solid() const { return solid_shapes().count(shape) > 0; }
@@ -294,6 +297,7 @@ void CreatePeridemGrains::command(int narg, char **arg)
   // the seed given, else the shape table's default
   const double seed0 = each ? shape_parameter(opt.shape, opt.params, "seed") : 0.0;
   std::map<std::pair<double, std::size_t>, Grain> built;
+  double closest = std::numeric_limits<double>::infinity(); // over the grains built
   for (std::size_t ig = 0; ig < opt.at.size(); ig++) {
     const double r = opt.at_radius.empty() ? 0.0 : opt.at_radius[ig];
     const std::pair<double, std::size_t> key(r, each ? ig : 0);
@@ -305,11 +309,16 @@ void CreatePeridemGrains::command(int narg, char **arg)
       it = built.emplace(key, Grain()).first;
       build(o, it->second);
       check_bonds_per_atom(it->second);
+      closest = std::min(closest, smallest_node_distance(o, it->second));
     }
     per_grain.push_back(&it->second);
   }
   place(opt, per_grain);
 
+  // the contact radius is commonly chosen from it (the PeriDEM authors: R_c = 0.95 x it)
+  if (comm->me == 0)
+    utils::logmesg(lmp, "  smallest node distance in a grain: {:.8g} (nodes {})\n", closest,
+                   opt.nodes == peridem::NodePlacement::Outline ? "outline" : "lattice");
   if (comm->me == 0)
     utils::logmesg(lmp, "  {} wall time = {:.3f} seconds\n", CMD, MPI_Wtime() - time0);
 }
@@ -432,6 +441,7 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
       o.extrude = positive(arg[iarg++], "extrude height");
     } else if (key == "volume") {
       need(1, "volume");
+      o.volume_given = true;
       const std::string v = arg[iarg++];
       if (v == "cell")
         o.volume = peridem::NodalVolume::CellArea;
@@ -439,6 +449,11 @@ void CreatePeridemGrains::parse(int narg, char **arg, Options &o)
         o.volume = peridem::NodalVolume::ExactClip;
       else
         error->all(FLERR, "{}: unknown volume mode '{}' (use cell or exact)", CMD, v);
+    } else if (key == "nodes") {
+      need(1, "nodes");
+      o.nodes = PERIDEM_NS::choice(lmp, CMD, "nodes", arg[iarg++], {"lattice", "outline"}) == 1
+                    ? peridem::NodePlacement::Outline
+                    : peridem::NodePlacement::Lattice;
     } else if (key == "pruning") {
       need(1, "pruning");
       const std::string v = arg[iarg++];
@@ -534,6 +549,22 @@ void CreatePeridemGrains::check(const Options &o)
   }
   if (!o.boundary.empty() && o.shape != "gmsh")
     error->all(FLERR, "{}: boundary is only used with gmsh meshes", CMD);
+  if (o.nodes == peridem::NodePlacement::Outline) {
+    if (o.shape == "gmsh")
+      error->all(FLERR,
+                 "{}: nodes outline is for lattice grains; gmsh nodes are where the mesh "
+                 "puts them",
+                 CMD);
+    if (o.is_solid() || o.extrude > 0.0)
+      error->all(FLERR, "{}: nodes outline is 2d only, not {}", CMD,
+                 o.extrude > 0.0 ? "extrude" : o.shape);
+    // a boundary node keeps the part of its cell inside the shape; h^2 would add material
+    if (o.volume_given && o.volume == peridem::NodalVolume::CellArea)
+      error->all(FLERR,
+                 "{}: volume cell cannot be used with nodes outline (its volumes are the cells "
+                 "clipped to the shape, as volume exact)",
+                 CMD);
+  }
 
   const bool solid = o.is_solid() || o.extrude > 0.0;
   if (domain->dimension == 2) {
@@ -656,6 +687,9 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
 
     peridem::GrainOptions gopt;
     gopt.lattice.volume = o.volume;
+    gopt.lattice.placement = o.nodes;
+    if (o.nodes == peridem::NodePlacement::Outline)
+      gopt.lattice.volume = peridem::NodalVolume::ExactClip;
     gopt.pruning = o.pruning;
     gopt.cuts = o.notches;
     const peridem::Grain2D grain = peridem::discretize_grain(shape, o.spacing, o.horizon, gopt);
@@ -665,6 +699,19 @@ void CreatePeridemGrains::build(const Options &o, Grain &g)
   } catch (peridem::GeometryError &e) {
     error->all(FLERR, "{}: {}", CMD, e.what());
   }
+}
+
+/* ----------------------------------------------------------------------
+   smallest distance between two nodes of a grain (lattice: the spacing
+   unless the shape is thinner; outline: at least half of it)
+------------------------------------------------------------------------- */
+
+double CreatePeridemGrains::smallest_node_distance(const Options &o, const Grain &g)
+{
+  std::vector<double> coords;
+  coords.reserve(3 * g.x.size());
+  for (const auto &x : g.x) coords.insert(coords.end(), x.begin(), x.end());
+  return peridem::smallest_pair_distance(coords, 3, o.spacing > 0.0 ? o.spacing : o.horizon);
 }
 
 /* ----------------------------------------------------------------------

@@ -50,6 +50,7 @@ class CreatePeridemGrains : public Command {
   void check(const Options &);
   void build(const Options &, Grain &);
   void check_bonds_per_atom(const Grain &);
+  double smallest_node_distance(const Options &, const Grain &);
   void place(const Options &, const std::vector<const Grain *> &);
   void read_positions(const char *, Options &);
   void report_bed_fraction(const Options &, double);

@@ -315,3 +315,60 @@ TEST_F(CreatePeridemGrainsTest, GmshGrainVolumesSumToMeshArea)
   EXPECT_NEAR(sum_volume(lmp), m.area(), 1e-12 * m.area());
   EXPECT_EQ(bond_set(lmp), core_bonds(g.bonds, 1));
 }
+
+// nodes outline: the nodes and volumes of the core library's outline lattice, its bonds, the
+// boundary nodes on the disk's circle and on both circles of the ring; nodes lattice is the
+// default
+TEST_F(CreatePeridemGrainsTest, NodesOutlineOnDiskAndRing)
+{
+  command(box2d);
+  const double h = 0.08, eps = 0.24;
+  const std::map<std::string, std::string> shapes = {{"disk", "at -2 0 0"}, {"ring", "at 2 0 0"}};
+  tagint tag0 = 1;
+  for (const auto &sh : shapes) {
+    command("create_peridem_grains 1 " + sh.first + " spacing 0.08 horizon 0.24 density 1 " +
+            sh.second + " nodes outline");
+    const peridem::Polygon shape = peridem::make_shape(sh.first, {});
+    peridem::GrainOptions opt;
+    opt.lattice.volume = peridem::NodalVolume::ExactClip;
+    opt.lattice.placement = peridem::NodePlacement::Outline;
+    const peridem::Grain2D g = peridem::discretize_grain(shape, h, eps, opt);
+    const double cx = sh.first == "disk" ? -2.0 : 2.0;
+    double volume = 0.0;
+    int on_outer = 0, on_inner = 0;
+    for (std::size_t k = 0; k < g.nodes.size(); k++) {
+      const int i = lmp->atom->map(tag0 + static_cast<tagint>(k));
+      ASSERT_GE(i, 0);
+      const peridem::Vec2 p(lmp->atom->x0[i][0] - cx, lmp->atom->x0[i][1]);
+      EXPECT_NEAR((p - g.nodes.x[k]).norm(), 0.0, 1e-14);
+      EXPECT_DOUBLE_EQ(lmp->atom->vfrac[i], g.nodes.volume[k]);
+      volume += lmp->atom->vfrac[i];
+      // the 64-gon's boundary points lie between r cos(pi/64) and r
+      const double r = p.norm(), lo = std::cos(M_PI / 64) * (1 - 1e-12);
+      if (r >= lo && r <= 1 + 1e-12) on_outer++;
+      if (sh.first == "ring" && r >= 0.6 * lo && r <= 0.6 * (1 + 1e-12)) on_inner++;
+      if (shape.boundary_distance(p) > 1e-12)
+        EXPECT_GE(shape.boundary_distance(p), 0.5 * h - 1e-12);
+    }
+    EXPECT_NEAR(volume, shape.area(), 1e-12 * shape.area()) << sh.first;
+    EXPECT_GT(on_outer, 0.8 * 2 * M_PI / h) << sh.first;
+    if (sh.first == "ring") EXPECT_GT(on_inner, 0.8 * 2 * M_PI * 0.6 / h);
+    std::set<TagBond> mine;
+    for (const auto &b : bond_set(lmp))
+      if (b.first >= tag0 && b.first < tag0 + static_cast<tagint>(g.nodes.size())) mine.insert(b);
+    EXPECT_EQ(mine, core_bonds(g.bonds, tag0)) << sh.first;
+    tag0 += g.nodes.size();
+  }
+
+  // nodes lattice: the default lattice nodes
+  command(
+      "create_peridem_grains 1 ring spacing 0.08 horizon 0.24 density 1 at 0 2 0 nodes lattice");
+  const peridem::Grain2D lat = peridem::discretize_grain(peridem::make_shape("ring", {}), h, eps);
+  for (std::size_t k = 0; k < lat.nodes.size(); k++) {
+    const peridem::Vec2 p = x0_of(lmp, tag0 + static_cast<tagint>(k));
+    EXPECT_NEAR(p.x, lat.nodes.x[k].x, 1e-15);
+    EXPECT_NEAR(p.y - 2.0, lat.nodes.x[k].y, 1e-15);
+    EXPECT_EQ(lmp->atom->vfrac[lmp->atom->map(tag0 + static_cast<tagint>(k))], h * h);
+  }
+  EXPECT_EQ(lmp->atom->natoms, static_cast<bigint>(tag0 - 1 + lat.nodes.size()));
+}

@@ -160,6 +160,10 @@ peridem_catalogue_error(grains_2d_shape_3d "create_peridem_grains: 2D shape disk
   -var bad "create_peridem_grains 1 disk at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 density 1000")
 peridem_catalogue_error(grains_volume_exact_3d "create_peridem_grains: volume exact is 2D only \\(3D nodes have volume h\\^3\\)"
   -var bad "create_peridem_grains 1 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 volume exact density 1000")
+peridem_catalogue_error(grains_outline_3d "create_peridem_grains: nodes outline is 2d only, not sphere"
+  -var bad "create_peridem_grains 1 sphere radius 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 density 1000 nodes outline")
+peridem_catalogue_error(grains_outline_extrude "create_peridem_grains: nodes outline is 2d only, not extrude"
+  -var bad "create_peridem_grains 1 disk radius 1e-3 extrude 1e-3 at 5e-3 5e-3 5e-3 spacing 5e-4 horizon 1e-3 density 1000 nodes outline")
 peridem_catalogue_error(bed_no_output "Illegal create_peridem_bed command: expected an output file"
   -var bad "create_peridem_bed")
 peridem_catalogue_error(bed_unknown_keyword "create_peridem_bed: unknown keyword 'colour'"

@@ -94,3 +94,28 @@ peridem_add_error_test(grains_fit_without_bed ${_g}/grain_box.in
 peridem_add_error_test(grains_fit_radius_square ${_g}/grain_box.in
   "create_peridem_grains: fit radius needs a built-in 2d shape with a radius parameter \\(disk, polygon, hexagon, plus, ring, perturbed_disk\\), not square"
   -var grain "square ${_ok} fit radius")
+
+# nodes outline: 2d lattice grains only, with their exact clipped volumes; the smallest node
+# distance in the summary (an aligned square keeps its spacing, a disk's outline nodes come closer)
+peridem_add_error_test(grains_outline_gmsh ${_g}/grain_box.in
+  "create_peridem_grains: nodes outline is for lattice grains; gmsh nodes are where the mesh puts them"
+  -var grain "gmsh none.msh horizon 0.3 density 1 at 0 0 0 nodes outline")
+peridem_add_error_test(grains_outline_volume_cell ${_g}/grain_box.in
+  "create_peridem_grains: volume cell cannot be used with nodes outline"
+  -var grain "disk radius 1 ${_ok} nodes outline volume cell")
+peridem_add_error_test(grains_nodes_unknown ${_g}/grain_box.in
+  "create_peridem_grains: nodes must be lattice or outline, not mesh"
+  -var grain "disk radius 1 ${_ok} nodes mesh")
+foreach(_case "square_lattice;square side 1.4;lattice;0.1" "square_outline;square side 1.4;outline;0.1"
+              "disk_outline;disk radius 1;outline;0.051410274")
+  list(GET _case 0 _name)
+  list(GET _case 1 _shape)
+  list(GET _case 2 _nodes)
+  list(GET _case 3 _dist)
+  add_test(NAME grains_nodes_report_${_name}
+    COMMAND ${PERIDEM_RUN}/expect_pass.sh
+            --regex "smallest node distance in a grain: ${_dist} \\(nodes ${_nodes}\\)"
+            $<TARGET_FILE:lmp_peridem> -in ${_g}/grain_box.in -log none -echo none
+            -var grain "${_shape} ${_ok} nodes ${_nodes}")
+endforeach()
+
