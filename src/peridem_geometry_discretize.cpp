@@ -113,21 +113,55 @@ bool box_meets_boundary(const Polygon &D, const Vec2 &lo, const Vec2 &hi)
 struct OutlineNode {
   Vec2 x;
   double volume;
-  std::size_t cell; // row-major cell index: the output order
+  std::size_t cell;    // row-major cell index: the output order
+  bool moved = false;  // moved onto the boundary
+  bool corner = false; // moved onto a corner of D
+  bool placed = true;  // false: no point of D found for it
 };
+
+// The corner of D in the closed box [lo, hi] nearest to c; false if there is none.
+// A corner is a vertex where the outline turns by more than outline_corner_angle,
+// so that the gentle vertices of a polygon standing for a curve are not preferred
+// to its edges (their nodes would crowd the vertices and leave gaps between).
+bool nearest_corner_in_box(const Polygon &D, const Vec2 &c, const Vec2 &lo, const Vec2 &hi,
+                           Vec2 &corner)
+{
+  const double cos_min = std::cos(outline_corner_angle);
+  bool found = false;
+  for (std::size_t k = 0; k < D.num_rings(); ++k) {
+    const Ring &r = D.ring(k);
+    const std::size_t n = r.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 &v = r[i];
+      if (v.x < lo.x || v.x > hi.x || v.y < lo.y || v.y > hi.y) continue;
+      const Vec2 a = v - r[(i + n - 1) % n], b = r[(i + 1) % n] - v;
+      if (dot(a, b) > cos_min * a.norm() * b.norm()) continue; // turns less
+      if (!found || (v - c).norm2() < (corner - c).norm2()) corner = v, found = true;
+    }
+  }
+  return found;
+}
 
 // Nodes closer than d to a point, found in a grid of cells of size d.
 class NearGrid {
  public:
   explicit NearGrid(double d) : d_(d) {}
   void insert(const Vec2 &p, std::size_t index) { cells_[key(p, 0, 0)].push_back(index); }
-  // index of the node nearest to p among those closer than d, or npos
-  std::size_t nearest(const Vec2 &p, const std::vector<OutlineNode> &nodes) const
+  void move(std::size_t index, const Vec2 &from, const Vec2 &to)
   {
+    auto &cell = cells_[key(from, 0, 0)];
+    cell.erase(std::find(cell.begin(), cell.end(), index));
+    insert(to, index);
+  }
+  // index of the node nearest to p among those closer than r (d by default), or npos
+  std::size_t nearest(const Vec2 &p, const std::vector<OutlineNode> &nodes, double r = 0.0) const
+  {
+    if (!(r > 0.0)) r = d_;
+    const int span = static_cast<int>(std::ceil(r / d_));
     std::size_t best = npos;
-    double best2 = d_ * d_;
-    for (int di = -1; di <= 1; ++di)
-      for (int dj = -1; dj <= 1; ++dj) {
+    double best2 = r * r;
+    for (int di = -span; di <= span; ++di)
+      for (int dj = -span; dj <= span; ++dj) {
         const auto it = cells_.find(key(p, di, dj));
         if (it == cells_.end()) continue;
         for (std::size_t n : it->second) {
@@ -136,6 +170,19 @@ class NearGrid {
         }
       }
     return best;
+  }
+  // number of nodes closer than r to p
+  std::size_t count(const Vec2 &p, const std::vector<OutlineNode> &nodes, double r) const
+  {
+    const int span = static_cast<int>(std::ceil(r / d_));
+    std::size_t n = 0;
+    for (int di = -span; di <= span; ++di)
+      for (int dj = -span; dj <= span; ++dj) {
+        const auto it = cells_.find(key(p, di, dj));
+        if (it == cells_.end()) continue;
+        for (std::size_t k : it->second) n += (nodes[k].x - p).norm2() < r * r;
+      }
+    return n;
   }
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
@@ -181,23 +228,49 @@ Nodes2D outline_nodes(const Polygon &D, double h, const Vec2 &offset, const Cell
         // inside or outside as its centre (a cell in a hole has area 0 up to round-off)
         if (D.locate(c) == 1) kept.push_back({c, area, cell});
       } else if (area > sliver * h * h) {
-        moved.push_back({c, area, cell});
+        // a corner in the cell first, so corners carry nodes and the node hull is the shape
+        OutlineNode m{c, area, cell};
+        m.moved = true;
+        m.corner = nearest_corner_in_box(D, c, lo, hi, m.x);
+        if (!m.corner) m.placed = snap_inside(D, m.x);
+        moved.push_back(m);
       } else if (area > 0.0) {
         slivers.push_back({c, area, cell});
       }
     }
   }
   // Interior nodes are h apart and, their cells being inside D, at least h/2
-  // from every moved node; the largest moved cells claim their place first.
+  // from every moved node; the vertices, then the largest moved cells claim
+  // their place first.
   const double d = outline_merge_fraction * h;
   NearGrid grid(d);
   for (std::size_t n = 0; n < kept.size(); ++n) grid.insert(kept[n].x, n);
-  std::stable_sort(moved.begin(), moved.end(),
-                   [](const OutlineNode &a, const OutlineNode &b) { return a.volume > b.volume; });
-  for (OutlineNode m : moved) {
-    // a point that cannot be put inside D gives its area to the nearest node
-    const std::size_t into =
-        snap_inside(D, m.x) ? grid.nearest(m.x, kept) : nearest_node(kept, m.x);
+  const double light_volume = outline_small_fraction * h * h;
+  std::stable_sort(moved.begin(), moved.end(), [&](const OutlineNode &a, const OutlineNode &b) {
+    const bool ca = a.corner && a.volume >= light_volume, cb = b.corner && b.volume >= light_volume;
+    return ca != cb ? ca : a.volume > b.volume;
+  });
+  for (const OutlineNode &m : moved) {
+    if (!m.placed) { // no point of D found: its area to the nearest node
+      const std::size_t into = nearest_node(kept, m.x);
+      if (into != NearGrid::npos) kept[into].volume += m.volume;
+      continue;
+    }
+    std::size_t into = grid.nearest(m.x, kept);
+    // A light cell (a corner or edge that just reaches into it) joins the nearest node
+    // within h, which moves onto its boundary point if it was inside D or the cell has
+    // a corner: the outline keeps its nodes without light ones. A node only moves to
+    // a point no other node is closer to than d.
+    const bool light = m.volume < light_volume;
+    if (into == NearGrid::npos && light) into = grid.nearest(m.x, kept, h);
+    if (into != NearGrid::npos &&
+        ((light && !kept[into].moved) || (m.corner && !kept[into].corner)) &&
+        grid.count(m.x, kept, d) <= 1) {
+      grid.move(into, kept[into].x, m.x);
+      kept[into].x = m.x;
+      kept[into].moved = true;
+      kept[into].corner = m.corner;
+    }
     if (into != NearGrid::npos) {
       kept[into].volume += m.volume;
     } else {

@@ -53,11 +53,19 @@ struct LatticeOptions {
   NodePlacement placement = NodePlacement::Lattice;
 };
 
-// Distance below which Outline merges two nodes, in units of h: a node moved onto
-// the boundary closer than this to a kept node gives it its volume. Interior
-// nodes are h apart and at least h/2 from the boundary, so every pair of nodes of
-// an Outline grain is at least outline_merge_fraction * h apart.
+// Outline (see lattice_nodes): a moved node closer than this (in units of h) to a
+// node already placed is merged into it. Interior nodes are h apart and at least
+// h/2 from the boundary, and a node is only ever placed that far from the others,
+// so no two nodes of an Outline grain are closer than outline_merge_fraction * h.
 constexpr double outline_merge_fraction = 0.5;
+// Outline: a cell with less than this fraction of h^2 in D is light (a corner or
+// an edge just reaching into it); below the h^2 / 4 of a cell at a right-angle
+// corner on a lattice point.
+constexpr double outline_small_fraction = 0.2;
+// Outline: a vertex of D where the outline turns by more than this (radians, 20
+// degrees) is a corner; not the vertices of a polygon standing for a curve, whose
+// nodes would crowd the vertices and leave gaps between them.
+constexpr double outline_corner_angle = 0.3490658503988659;
 
 // Square lattice of spacing h clipped to D. A lattice point is kept if it is
 // inside the closed shape up to 1e-9 h (so points meant to lie on the boundary
@@ -66,15 +74,23 @@ constexpr double outline_merge_fraction = 0.5;
 // With ExactClip, the area of a cell whose centre is outside D is given to the
 // nearest node, so the volumes sum to |D|.
 //
-// With Outline (requires ExactClip, else GeometryError) every cell with area in
-// D gives one node with that area as its volume: a cell the boundary of any
-// ring meets (closed cell) moves its node to the nearest boundary point (a few
-// ulps inward where round-off puts it outside); the other cells keep their
-// lattice point. A cell with less than 1e-12 of its area in D gives it to the
-// nearest node. Moved nodes are then taken in order of decreasing volume: one
-// closer than outline_merge_fraction * h to a node already kept is merged into
-// it (volume added), e.g. two cells at a convex corner or across an arm thinner
-// than h/2. Nodes keep the lattice's row-major order.
+// With Outline (requires ExactClip, else GeometryError) the node of every cell
+// (closed h x h square) that the boundary of any ring meets is moved onto the
+// boundary, with the cell's area in D as its volume: onto the corner in the cell
+// nearest to its lattice point, else onto the nearest boundary point (a few ulps
+// inward where round-off puts it outside). Cells the boundary does not meet keep
+// their lattice point. The moved nodes are placed in turn, corners of cells that
+// are not light first, then by decreasing volume:
+//  * one closer than outline_merge_fraction * h to a placed node is merged into
+//    it (volume added): cells at a convex corner, an arm thinner than h/2;
+//  * a light one else joins the nearest node within h, which moves onto the
+//    light node's point if it was an interior node or the light node is on a
+//    corner, so that an edge just beyond a lattice row moves that row onto it
+//    instead of adding light nodes;
+//  * a node moves only to a point no other node is closer to than
+//    outline_merge_fraction * h.
+// A cell with less than 1e-12 of its area in D (round-off) gives it to the
+// nearest node. The volumes sum to |D|. Nodes keep the lattice's row-major order.
 Nodes2D lattice_nodes(const Polygon &D, double h, const LatticeOptions &opt = {});
 
 // True if the closed segment [a, b] meets the closed box [lo, hi] (Liang-Barsky).

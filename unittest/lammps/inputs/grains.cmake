@@ -107,7 +107,7 @@ peridem_add_error_test(grains_nodes_unknown ${_g}/grain_box.in
   "create_peridem_grains: nodes must be lattice or outline, not mesh"
   -var grain "disk radius 1 ${_ok} nodes mesh")
 foreach(_case "square_lattice;square side 1.4;lattice;0.1" "square_outline;square side 1.4;outline;0.1"
-              "disk_outline;disk radius 1;outline;0.051410274")
+              "disk_outline;disk radius 1;outline;0.080906131")
   list(GET _case 0 _name)
   list(GET _case 1 _shape)
   list(GET _case 2 _nodes)
