@@ -19,7 +19,10 @@ Reads LAMMPS text dumps (``dump custom`` and ``dump local``) and
 * ``plot_vs_volume_fraction``: bulk damage and wall force against the
   volume fraction (Bhattacharya & Lipton 2023, §7.4, Fig. 14), from a fix ave/time
   file of ``c_bed[6]``, ``c_dmg`` and a wall force;
-* ``snapshot``: the nodes coloured by damage or by fragment ID.
+* ``snapshot``: the nodes coloured by damage or by fragment ID;
+* ``grain_contact_loads``: from a node dump and a ``dump local`` of node-pair
+  contact forces (compute pair/local), the force summed over each pair of
+  touching grains (the force-chain network) and each grain's contact load.
 
 Command line::
 
@@ -123,6 +126,31 @@ def read_thermo(path, first=("Step", "Time")):
                 seen.add(r[names[0]])
                 rows.append(r)
     return rows
+
+
+def grain_contact_loads(node_ids, node_grains, pair_rows):
+    """Contact forces between grains from node-pair forces.
+
+    node_ids, node_grains: the node IDs and their grain (molecule) IDs;
+    pair_rows: rows (id_i, id_j, ..., f) of a ``dump local`` of compute
+    pair/local, the force in the last column. Pairs within one grain are
+    skipped (self contact). Returns (pairs, load): pairs maps each sorted
+    (grain a, grain b) to the sum of |f| over their node pairs; load maps
+    every grain to the sum of |f| over its node pairs with other grains.
+    """
+    grain_of = dict(zip((int(i) for i in node_ids), (int(g) for g in node_grains)))
+    pairs = {}
+    load = dict.fromkeys(grain_of.values(), 0.0)
+    for row in pair_rows:
+        ga, gb = grain_of[int(row[0])], grain_of[int(row[1])]
+        if ga == gb:
+            continue
+        f = abs(float(row[-1]))
+        key = (min(ga, gb), max(ga, gb))
+        pairs[key] = pairs.get(key, 0.0) + f
+        load[ga] += f
+        load[gb] += f
+    return pairs, load
 
 
 def verdict(fails, passed=""):

@@ -49,7 +49,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
-from peridem_post import column, read_dump  # noqa: E402
+from peridem_post import column, grain_contact_loads, read_dump  # noqa: E402
 
 COMMON = ["-var", "W", "12e-3", "-var", "H", "10e-3", "-var", "h", "0.25e-3",
           "-var", "horizon", "0.75e-3", "-var", "every", "0", "-var", "tag", "red",
@@ -81,18 +81,11 @@ def grains_of(path):
     return dict(zip(ids, mol))
 
 
-def grain_contact_loads(path, grain_of):
+def contact_loads(path, grain_of):
     """Sum of |f| over the contact pairs of different grains, per grain."""
-    load = {}
     snap = read_dump(path)[0]
-    if snap["data"] is None:
-        return load
-    for a, b, f in snap["data"]:
-        ga, gb = grain_of[int(a)], grain_of[int(b)]
-        if ga != gb:
-            load[ga] = load.get(ga, 0.0) + abs(f)
-            load[gb] = load.get(gb, 0.0) + abs(f)
-    return load
+    rows = snap["data"] if snap["data"] is not None else []
+    return grain_contact_loads(list(grain_of), list(grain_of.values()), rows)[1]
 
 
 def main():
@@ -178,8 +171,8 @@ def main():
         window = [s for s in steps if s <= first_damaged][-WINDOW:]
         mean_load = {g: 0.0 for g in set(grain_of.values())}
         for s in window:
-            for g, v in grain_contact_loads(os.path.join(a.out, f"red_chains.{s}.dump"),
-                                            grain_of).items():
+            for g, v in contact_loads(os.path.join(a.out, f"red_chains.{s}.dump"),
+                                      grain_of).items():
                 mean_load[g] += v / len(window)
         on_damaged = np.array([mean_load[g] for g in damaged])
         on_intact = np.array([v for g, v in mean_load.items() if g not in damaged])

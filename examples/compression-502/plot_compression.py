@@ -35,7 +35,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
-from peridem_post import column, read_dump  # noqa: E402
+from peridem_post import column, grain_contact_loads, read_dump  # noqa: E402
 
 ONSET = 1e3  # Pa
 TIMES = (0.102, 0.118, 0.126, 0.134)  # s: the paper's t1-t4 (§4.4, Fig. 23)
@@ -72,16 +72,9 @@ def force_chains(run, tag):
         snap = read_dump(path)[0]
         ids, mol = column(snap, "id").astype(int), column(snap, "mol").astype(int)
         dmg = column(snap, "c_dmg[1]")
-        grain_of = dict(zip(ids, mol))
         grains = np.unique(mol)
-        load = dict.fromkeys(grains.tolist(), 0.0)
         c = read_dump(contacts)[0]
-        if c["data"] is not None:
-            for a, b, f in c["data"]:
-                ga, gb = grain_of[int(a)], grain_of[int(b)]
-                if ga != gb:
-                    load[ga] += abs(f)
-                    load[gb] += abs(f)
+        _, load = grain_contact_loads(ids, mol, c["data"] if c["data"] is not None else [])
         damaged = set(mol[dmg > 0].tolist())
         on_d = [load[g] for g in grains if g in damaged]
         on_i = [load[g] for g in grains if g not in damaged]

@@ -56,6 +56,19 @@ class CrackAngle(unittest.TestCase):
             pp.crack_angle([0.0, 1.0], [0.0, 0.0], [0.0, 0.2])
 
 
+class GrainContactLoads(unittest.TestCase):
+    def test_sums_by_grain_pair_and_skips_self_contact(self):
+        ids = [1, 2, 3, 4, 5]
+        grains = [10, 10, 20, 20, 30]
+        rows = [(1, 3, 2.0), (2, 3, -1.5), (3, 5, 4.0), (1, 2, 9.0), (4, 2, 0.5)]
+        pairs, load = pp.grain_contact_loads(ids, grains, rows)
+        self.assertEqual(pairs, {(10, 20): 4.0, (20, 30): 4.0})
+        self.assertEqual(load, {10: 4.0, 20: 8.0, 30: 4.0})
+        # the force is the last column, whatever comes between
+        pairs2, _ = pp.grain_contact_loads(ids, grains, [(1, 3, 0.1, 2.0)])
+        self.assertEqual(pairs2, {(10, 20): 2.0})
+
+
 class Readers(unittest.TestCase):
     def test_dump_custom_and_local(self):
         with tempfile.TemporaryDirectory() as d:
