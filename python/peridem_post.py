@@ -133,7 +133,8 @@ def grain_contact_loads(node_ids, node_grains, pair_rows):
 
     node_ids, node_grains: the node IDs and their grain (molecule) IDs;
     pair_rows: rows (id_i, id_j, ..., f) of a ``dump local`` of compute
-    pair/local, the force in the last column. Pairs within one grain are
+    pair/local, the force in the last column (None, as read_dump gives for a
+    snapshot without entries: no contact). Pairs within one grain are
     skipped (self contact). Returns (pairs, load): pairs maps each sorted
     (grain a, grain b) to the sum of |f| over their node pairs; load maps
     every grain to the sum of |f| over its node pairs with other grains.
@@ -141,7 +142,7 @@ def grain_contact_loads(node_ids, node_grains, pair_rows):
     grain_of = dict(zip((int(i) for i in node_ids), (int(g) for g in node_grains)))
     pairs = {}
     load = dict.fromkeys(grain_of.values(), 0.0)
-    for row in pair_rows:
+    for row in pair_rows if pair_rows is not None else ():
         ga, gb = grain_of[int(row[0])], grain_of[int(row[1])]
         if ga == gb:
             continue

@@ -66,13 +66,12 @@ def analyse(run, damage):
     ids, mol = column(snap, "id").astype(int), column(snap, "mol").astype(int)
     x, y = column(snap, "x"), column(snap, "y")
     chains = read_dump(os.path.join(run, f"chains.{s0}.dump"))[0]
-    rows = chains["data"] if chains["data"] is not None else []
-    pairs, load = grain_contact_loads(ids, mol, rows)
+    pairs, load = grain_contact_loads(ids, mol, chains["data"])
     d0 = grain_damage(snap)
     d1 = grain_damage(read_dump(os.path.join(run, f"nodes.{s1}.dump"))[0])
     damaged = sorted(g for g in d1 if d1[g] > d0.get(g, 0.0))
     on_d = np.mean([load[g] for g in damaged])
-    on_i = np.mean([v for g, v in load.items() if g not in set(damaged)])
+    on_i = np.mean([v for g, v in load.items() if g not in damaged])
     # the damaged grains' rank among all grains by contact load (1 = most loaded)
     order = sorted(load, key=load.get, reverse=True)
     ranks = [order.index(g) + 1 for g in damaged]

@@ -83,8 +83,7 @@ def grains_of(path):
 
 def contact_loads(path, grain_of):
     """Sum of |f| over the contact pairs of different grains, per grain."""
-    snap = read_dump(path)[0]
-    rows = snap["data"] if snap["data"] is not None else []
+    rows = read_dump(path)[0]["data"]
     return grain_contact_loads(list(grain_of), list(grain_of.values()), rows)[1]
 
 

@@ -74,7 +74,7 @@ def force_chains(run, tag):
         dmg = column(snap, "c_dmg[1]")
         grains = np.unique(mol)
         c = read_dump(contacts)[0]
-        _, load = grain_contact_loads(ids, mol, c["data"] if c["data"] is not None else [])
+        _, load = grain_contact_loads(ids, mol, c["data"])
         damaged = set(mol[dmg > 0].tolist())
         on_d = [load[g] for g in grains if g in damaged]
         on_i = [load[g] for g in grains if g not in damaged]

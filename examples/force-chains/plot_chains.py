@@ -13,56 +13,31 @@ thick as the sum of the normal forces of their node pairs (compute
 pair/local of pair_style peridem/contact). Reads dump.nodes and dump.chains,
 writes force_chains.png (needs matplotlib).
 usage: plot_chains.py [DIR]"""
-import collections
 import os
 import sys
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def last_frame(path):
-    """Rows of the last snapshot of a LAMMPS text dump."""
-    rows, frame = [], None
-    with open(path) as f:
-        for line in f:
-            if line.startswith("ITEM: TIMESTEP"):
-                frame = []
-                rows = frame
-            elif line.startswith("ITEM:"):
-                continue
-            elif frame is not None:
-                frame.append(line.split())
-    return rows
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+from peridem_post import column, grain_contact_loads, read_dump  # noqa: E402
 
 
 d = sys.argv[1] if len(sys.argv) > 1 else "."
-# dump.nodes: a header block (timestep, number, box) then "id mol x y"
-nodes = [r for r in last_frame(os.path.join(d, "dump.nodes")) if len(r) == 4]
-grain = {int(r[0]): int(r[1]) for r in nodes}
-xy = {int(r[0]): (float(r[2]), float(r[3])) for r in nodes}
-sums = collections.defaultdict(lambda: [0.0, 0.0, 0])
-for i, (x, y) in xy.items():
-    s = sums[grain[i]]
-    s[0] += x
-    s[1] += y
-    s[2] += 1
-centre = {g: (s[0] / s[2], s[1] / s[2]) for g, s in sums.items()}
-
-# dump.chains: "atom1 atom2 dist force" per node pair in the neighbour list
-force = collections.defaultdict(float)
-for r in last_frame(os.path.join(d, "dump.chains")):
-    if len(r) != 4:
-        continue
-    a, b, f = int(r[0]), int(r[1]), float(r[3])
-    if f > 0.0 and grain[a] != grain[b]:
-        force[tuple(sorted((grain[a], grain[b])))] += f
+# the last snapshot of each dump: dump.nodes "id mol x y", dump.chains "atom1 atom2 dist
+# force" per node pair in the neighbour list (pairs without a repulsive force are skipped)
+nodes = read_dump(os.path.join(d, "dump.nodes"))[-1]
+ids, mol = column(nodes, "id").astype(int), column(nodes, "mol").astype(int)
+x, y = column(nodes, "x"), column(nodes, "y")
+centre = {int(g): (x[mol == g].mean(), y[mol == g].mean()) for g in np.unique(mol)}
+chains = read_dump(os.path.join(d, "dump.chains"))[-1]["data"]
+force = grain_contact_loads(ids, mol, None if chains is None else chains[chains[:, -1] > 0.0])[0]
 
 fig, ax = plt.subplots(figsize=(5, 6))
-ax.scatter([p[0] * 1e3 for p in xy.values()], [p[1] * 1e3 for p in xy.values()], s=1.5,
-           color="0.75", linewidths=0)
+ax.scatter(x * 1e3, y * 1e3, s=1.5, color="0.75", linewidths=0)
 fmean = sum(force.values()) / max(len(force), 1)
 for (g, h), f in force.items():
     (x1, y1), (x2, y2) = centre[g], centre[h]

@@ -67,6 +67,8 @@ class GrainContactLoads(unittest.TestCase):
         # the force is the last column, whatever comes between
         pairs2, _ = pp.grain_contact_loads(ids, grains, [(1, 3, 0.1, 2.0)])
         self.assertEqual(pairs2, {(10, 20): 2.0})
+        # a dump local snapshot without entries (read_dump's data None): no contact
+        self.assertEqual(pp.grain_contact_loads(ids, grains, None), ({}, {10: 0.0, 20: 0.0, 30: 0.0}))
 
 
 class Readers(unittest.TestCase):
